@@ -5,6 +5,7 @@
 // flatten it into the float layouts of shaders/lib/scene_layout.glsl.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -55,8 +56,13 @@ struct Mesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;  // per vertex, unit; empty means flat shading
   std::vector<glm::dvec2> uvs;      // per vertex; may be empty
+  // Per vertex, optional (only with normals): xyz = unit tangent along +u, w = +-1 handedness,
+  // bitangent = w * cross(normal, tangent.xyz) as in glTF 2.0.
+  std::vector<glm::dvec4> tangents;
   std::vector<uint32_t> indices;    // three per triangle
   uint32_t material = 0;
+
+  size_t triangle_count() const { return indices.size() / 3; }
 };
 
 struct Scene {
@@ -66,6 +72,7 @@ struct Scene {
   glm::dvec3 ambient{0.0};     // constant RGB irradiance added to every lit point
   glm::dvec3 background{0.0};  // RGB radiance of rays that hit nothing
   std::vector<Material> materials;
+  std::vector<std::string> material_names;  // parallel to materials, for messages and metadata
   std::vector<Plane> planes;
   std::vector<Sphere> spheres;
   std::vector<Mesh> meshes;

@@ -3,7 +3,8 @@
 // A kernel file includes this prelude and uses only: the scalar/vector aliases below
 // (real, real2, real3, real4, real2x2), int/uint/bool, structs returned by value (no
 // out/inout parameters), GLSL built-ins that GLM also provides (exp, sqrt, abs, min, max,
-// clamp, mix, dot, ...) and literals written as real(0.5). On the GPU `real` is float; C++
+// clamp, mix, dot, ...) and literals written as real(0.5). Every function is declared
+// `inline` (a no-op macro in GLSL), since C++ sees each definition in many translation units. On the GPU `real` is float; C++
 // compiles the same file twice, into facet::kernels::f32 and facet::kernels::f64
 // (renderer/kernels/shared.hpp), so the CPU reference runs a double twin of the GPU code.
 #ifndef FACET_PRELUDE_GLSL
@@ -16,6 +17,7 @@
 #define real4 vec4
 #define real2x2 mat2
 #define REAL_IS_DOUBLE 0
+#define inline
 #endif
 
 

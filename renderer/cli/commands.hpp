@@ -1,0 +1,23 @@
+// The subcommands of the `facet` program. Each registers its options on the CLI11 app and
+// returns the action to run once the command line is parsed.
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace facet::cli {
+
+using Action = std::function<int()>;
+
+// Options every subcommand that touches Vulkan shares.
+struct DeviceOptions {
+  std::string device;
+  bool validation = false;
+};
+void add_device_options(CLI::App& command, DeviceOptions& options);
+
+void add_render_command(CLI::App& app, Action& action);
+void add_info_command(CLI::App& app, Action& action);
+
+}  // namespace facet::cli

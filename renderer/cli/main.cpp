@@ -1,0 +1,25 @@
+// facet: batch renderer of filtered, alias-free sub-pixel detail (see README.md).
+#include <exception>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "common/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"facet: correct, alias-free pictures of sub-pixel detail, and how wrong a fast answer is"};
+  app.require_subcommand(1);
+  facet::cli::Action action;
+  facet::cli::add_render_command(app, action);
+  facet::cli::add_info_command(app, action);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return action();
+  } catch (const std::exception& e) {
+    std::cerr << "facet: error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,41 @@
+#include "cpu/lambert_cpu.hpp"
+
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "cpu/ray_caster.hpp"
+#include "kernels/shared.hpp"
+#include "scene/camera_frame.hpp"
+
+namespace facet::cpu {
+
+namespace k = kernels::f64;
+
+Image render_lambert_cpu(const Scene& scene, int width, int height) {
+  const CameraFrame camera = camera_frame(scene.camera, width, height);
+  const glm::dvec2 resolution(width, height);
+  const glm::dvec3 l = scene.light.direction;
+
+  RayCaster caster(scene);
+  Image image(width, height);
+  tbb::parallel_for(0, height, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      glm::dvec3 d = k::camera_ray_direction(camera.forward, camera.right, camera.up, glm::dvec2(x + 0.5, y + 0.5), resolution);
+      glm::dvec3 color = scene.background;
+      if (auto hit = caster.intersect(camera.origin, d)) {
+        glm::dvec3 n = hit->shading_normal;
+        // Same scale-relative offset as the GPU pass (shaders/render_lambert.comp).
+        glm::dvec3 origin = hit->position + n * (1e-4 * std::max(1.0, glm::length(hit->position)));
+        double visibility =
+            glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;
+        const auto& albedo = std::get<LambertMaterial>(scene.materials[hit->material]).albedo;
+        color = k::lambert_radiance(albedo, n, l, scene.light.irradiance, visibility, scene.ambient);
+      }
+      image.set(x, y, glm::vec3(color));
+    }
+  });
+  return image;
+}
+
+}  // namespace facet::cpu

@@ -1,0 +1,22 @@
+// C++ view of shaders/layout/scene_layout.glsl: the same structs, with GLM types.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace facet::gpu {
+using glm::uvec4;
+using glm::vec3;
+using glm::vec4;
+using uint = std::uint32_t;
+#include "layout/scene_layout.glsl"
+
+static_assert(sizeof(GpuGlobals) == 160);
+static_assert(sizeof(GpuPlane) == 48);
+static_assert(sizeof(GpuSphere) == 32);
+static_assert(sizeof(GpuTriangle) == 112);
+static_assert(sizeof(GpuBvhNode) == 32);
+static_assert(sizeof(GpuMaterial) == 32);
+static_assert(sizeof(GpuTile) == 16);
+}  // namespace facet::gpu

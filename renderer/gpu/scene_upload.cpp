@@ -1,0 +1,81 @@
+#include "gpu/scene_upload.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <span>
+#include <vector>
+
+#include "scene/bvh.hpp"
+#include "scene/camera_frame.hpp"
+
+namespace facet::gpu {
+
+namespace {
+
+vec4 to_vec4(glm::dvec3 v, double w = 0.0) { return vec4(glm::vec3(v), static_cast<float>(w)); }
+
+std::vector<GpuTriangle> flatten_triangles(const Scene& scene, const Bvh& bvh) {
+  std::vector<GpuTriangle> triangles;
+  triangles.reserve(bvh.triangles.size());
+  for (const BvhTriangleRef& ref : bvh.triangles) {
+    const Mesh& mesh = scene.meshes[ref.mesh];
+    GpuTriangle tri{};
+    vec4* positions[3] = {&tri.p0, &tri.p1, &tri.p2};
+    vec4* normals[3] = {&tri.n0, &tri.n1, &tri.n2};
+    for (int corner = 0; corner < 3; ++corner) {
+      uint32_t vertex = mesh.indices[3 * ref.triangle + corner];
+      *positions[corner] = to_vec4(mesh.positions[vertex]);
+      if (!mesh.normals.empty()) *normals[corner] = to_vec4(mesh.normals[vertex]);
+    }
+    tri.material = uvec4(mesh.material);
+    triangles.push_back(tri);
+  }
+  return triangles;
+}
+
+}  // namespace
+
+GpuGlobals make_globals(const Scene& scene, int width, int height) {
+  const CameraFrame camera = camera_frame(scene.camera, width, height);
+  GpuGlobals g{};
+  g.camera_origin = to_vec4(camera.origin);
+  g.camera_forward = to_vec4(camera.forward);
+  g.camera_right = to_vec4(camera.right);
+  g.camera_up = to_vec4(camera.up);
+  g.light_direction = to_vec4(scene.light.direction);
+  g.light_irradiance = to_vec4(scene.light.irradiance);
+  g.ambient = to_vec4(scene.ambient);
+  g.background = to_vec4(scene.background);
+  g.image = uvec4(width, height, 0, 0);
+  return g;
+}
+
+SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, int height) {
+  std::vector<GpuPlane> planes;
+  for (const Plane& p : scene.planes)
+    planes.push_back({to_vec4(p.point), to_vec4(glm::normalize(p.normal)), uvec4(p.material)});
+  std::vector<GpuSphere> spheres;
+  for (const Sphere& s : scene.spheres) spheres.push_back({to_vec4(s.center, s.radius), uvec4(s.material)});
+  std::vector<GpuMaterial> materials;
+  for (const Material& m : scene.materials)
+    materials.push_back({to_vec4(std::get<LambertMaterial>(m).albedo), uvec4(0)});
+
+  Bvh bvh = build_bvh(scene.meshes);
+  std::vector<GpuBvhNode> nodes(bvh.nodes.size());
+  static_assert(sizeof(BvhNode) == sizeof(GpuBvhNode));
+  std::memcpy(nodes.data(), bvh.nodes.data(), nodes.size() * sizeof(GpuBvhNode));
+  std::vector<GpuTriangle> triangles = flatten_triangles(scene, bvh);
+
+  GpuGlobals globals = make_globals(scene, width, height);
+  globals.counts = uvec4(planes.size(), spheres.size(), nodes.size(), triangles.size());
+  return SceneBuffers{
+      vk::Buffer::from(context, std::span<const GpuGlobals>(&globals, 1)),
+      vk::Buffer::from(context, std::span<const GpuPlane>(planes)),
+      vk::Buffer::from(context, std::span<const GpuSphere>(spheres)),
+      vk::Buffer::from(context, std::span<const GpuBvhNode>(nodes)),
+      vk::Buffer::from(context, std::span<const GpuTriangle>(triangles)),
+      vk::Buffer::from(context, std::span<const GpuMaterial>(materials)),
+  };
+}
+
+}  // namespace facet::gpu

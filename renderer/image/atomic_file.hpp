@@ -1,0 +1,15 @@
+// Writing a file so that readers see either the old file or the complete new one, never a torn one.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+
+namespace facet {
+
+// Calls `write` on a temporary file in the destination's directory, flushes it to disk and renames it
+// over `destination`. If anything fails (including `write` throwing) the temporary is removed, the
+// destination is left as it was, and a facet::Error naming `destination` is thrown.
+void write_file_atomically(const std::filesystem::path& destination, const std::function<void(std::FILE*)>& write);
+
+}  // namespace facet

@@ -1,0 +1,197 @@
+#include "image/exr_io.hpp"
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfDoubleAttribute.h>
+#include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfTestFile.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "image/atomic_file.hpp"
+#include "image/io_error.hpp"
+
+namespace facet {
+namespace {
+
+// OpenEXR writes through this so that atomic_file owns the file (and can fsync and rename it).
+class StdioOStream : public Imf::OStream {
+ public:
+  explicit StdioOStream(std::FILE* file) : Imf::OStream("exr output"), file_(file) {}
+  void write(const char c[], int n) override {
+    if (std::fwrite(c, 1, static_cast<std::size_t>(n), file_) != static_cast<std::size_t>(n))
+      throw std::runtime_error("write failed");
+  }
+  std::uint64_t tellp() override { return static_cast<std::uint64_t>(::ftello(file_)); }
+  void seekp(std::uint64_t pos) override {
+    if (::fseeko(file_, static_cast<off_t>(pos), SEEK_SET) != 0) throw std::runtime_error("seek failed");
+  }
+
+ private:
+  std::FILE* file_;
+};
+
+void check_writable(const Image& image, ExrPixelType type, NonFinite non_finite) {
+  if (image.width <= 0 || image.height <= 0)
+    throw std::runtime_error("cannot write an empty image (" + std::to_string(image.width) + "x" +
+                             std::to_string(image.height) + ")");
+  if (image.rgb.size() != 3 * image.pixel_count())
+    throw std::runtime_error("image has " + std::to_string(image.rgb.size()) + " floats, expected 3 per pixel");
+  if (non_finite == NonFinite::Allow) return;
+  // Half rounds |v| >= 65520 (the midpoint above the largest half, 65504) to infinity.
+  const float limit = type == ExrPixelType::Half ? 65520.0f : std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    if (!(std::abs(image.rgb[i]) < limit)) {
+      const std::size_t pixel = i / 3;
+      throw std::runtime_error("pixel (" + std::to_string(pixel % image.width) + ", " +
+                               std::to_string(pixel / image.width) + ") value " + std::to_string(image.rgb[i]) +
+                               (type == ExrPixelType::Half ? " is not finite in half precision" : " is not finite"));
+    }
+  }
+}
+
+void insert_metadata(Imf::Header& header, const ExrMetadata& metadata) {
+  for (const auto& [name, value] : metadata) {
+    if (const auto* text = std::get_if<std::string>(&value)) {
+      header.insert(name, Imf::StringAttribute(*text));
+    } else if (const auto* real = std::get_if<double>(&value)) {
+      header.insert(name, Imf::DoubleAttribute(*real));
+    } else {
+      const std::int64_t integer = std::get<std::int64_t>(value);
+      if (integer < std::numeric_limits<int>::min() || integer > std::numeric_limits<int>::max())
+        throw std::runtime_error("metadata '" + name + "' = " + std::to_string(integer) +
+                                 " does not fit an EXR int (32-bit)");
+      header.insert(name, Imf::IntAttribute(static_cast<int>(integer)));
+    }
+  }
+}
+
+bool is_required_attribute(const std::string& name) {
+  for (const char* required : {"channels", "compression", "dataWindow", "displayWindow", "lineOrder",
+                               "pixelAspectRatio", "screenWindowCenter", "screenWindowWidth"})
+    if (name == required) return true;
+  return false;
+}
+
+ExrMetadata extract_metadata(const Imf::Header& header) {
+  ExrMetadata metadata;
+  for (auto it = header.begin(); it != header.end(); ++it) {
+    const std::string name = it.name();
+    if (is_required_attribute(name)) continue;
+    const Imf::Attribute& attribute = it.attribute();
+    if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&attribute))
+      metadata[name] = text->value();
+    else if (const auto* real = dynamic_cast<const Imf::DoubleAttribute*>(&attribute))
+      metadata[name] = real->value();
+    else if (const auto* single = dynamic_cast<const Imf::FloatAttribute*>(&attribute))
+      metadata[name] = static_cast<double>(single->value());
+    else if (const auto* integer = dynamic_cast<const Imf::IntAttribute*>(&attribute))
+      metadata[name] = static_cast<std::int64_t>(integer->value());
+  }
+  return metadata;
+}
+
+std::string channel_names(const Imf::ChannelList& channels) {
+  std::string names;
+  for (auto it = channels.begin(); it != channels.end(); ++it)
+    names += (names.empty() ? "" : ", ") + std::string(it.name());
+  return names.empty() ? "none" : names;
+}
+
+// Opens `path` after the checks that give a clearer message than OpenEXR's own, and turns any
+// failure of `read` into one facet::Error naming the file.
+template <typename Read>
+auto read_with(const std::filesystem::path& path, Read read) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw io_error(path, "no such file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw io_error(path, "not a regular file");
+  if (!Imf::isOpenExrFile(path.c_str())) throw io_error(path, "not an OpenEXR file");
+  try {
+    Imf::InputFile input(path.c_str());
+    return read(input);
+  } catch (const std::exception& e) {
+    throw io_error(path, e.what());
+  }
+}
+
+}  // namespace
+
+void write_exr(const std::filesystem::path& path, const Image& image, const ExrMetadata& metadata, ExrPixelType type,
+               NonFinite non_finite) {
+  write_file_atomically(path, [&](std::FILE* file) {
+    check_writable(image, type, non_finite);
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    insert_metadata(header, metadata);
+    // OpenEXR converts pixel types when reading but not when writing, so half data is rounded here
+    // (Imath: round to nearest, ties to even).
+    std::vector<Imath::half> halves;
+    if (type == ExrPixelType::Half) halves.assign(image.rgb.begin(), image.rgb.end());
+    const Imf::PixelType pixel_type = type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
+    const std::size_t sample_size = type == ExrPixelType::Half ? sizeof(Imath::half) : sizeof(float);
+    const char* base = type == ExrPixelType::Half ? reinterpret_cast<const char*>(halves.data())
+                                                  : reinterpret_cast<const char*>(image.rgb.data());
+    Imf::FrameBuffer frame;
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+      header.channels().insert(names[c], Imf::Channel(pixel_type));
+      frame.insert(names[c], Imf::Slice::Make(pixel_type, base + c * sample_size, header.dataWindow(), 3 * sample_size,
+                                              3 * sample_size * image.width));
+    }
+    StdioOStream stream(file);
+    Imf::OutputFile output(stream, header);
+    output.setFrameBuffer(frame);
+    output.writePixels(image.height);
+  });
+}
+
+Image read_exr(const std::filesystem::path& path, ExrMetadata* metadata) {
+  return read_with(path, [&](Imf::InputFile& input) {
+    const Imath::Box2i window = input.header().dataWindow();
+    Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    const Imf::ChannelList& channels = input.header().channels();
+    const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
+    if (!rgb && !channels.findChannel("Y"))
+      throw std::runtime_error("has neither R, G, B nor Y channels (has " + channel_names(channels) + ")");
+    // A Y-only file is read into the red samples, then copied to green and blue.
+    Imf::FrameBuffer frame;
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < (rgb ? 3 : 1); ++c)
+      frame.insert(rgb ? names[c] : "Y", Imf::Slice::Make(Imf::FLOAT, image.rgb.data() + c, window, 3 * sizeof(float),
+                                                          3 * sizeof(float) * image.width));
+    input.setFrameBuffer(frame);
+    input.readPixels(window.min.y, window.max.y);
+    if (!rgb)
+      for (std::size_t i = 0; i < image.rgb.size(); i += 3) image.rgb[i + 1] = image.rgb[i + 2] = image.rgb[i];
+    if (metadata != nullptr) *metadata = extract_metadata(input.header());
+    return image;
+  });
+}
+
+ScalarImage read_exr_scalar(const std::filesystem::path& path, const std::string& channel) {
+  return read_with(path, [&](Imf::InputFile& input) {
+    const Imath::Box2i window = input.header().dataWindow();
+    ScalarImage image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    const Imf::ChannelList& channels = input.header().channels();
+    if (!channels.findChannel(channel))
+      throw std::runtime_error("has no channel '" + channel + "' (has " + channel_names(channels) + ")");
+    Imf::FrameBuffer frame;
+    frame.insert(channel, Imf::Slice::Make(Imf::FLOAT, image.values.data(), window));
+    input.setFrameBuffer(frame);
+    input.readPixels(window.min.y, window.max.y);
+    return image;
+  });
+}
+
+}  // namespace facet

@@ -1,0 +1,37 @@
+// OpenEXR files: scene-linear RGB frames with facet's metadata, and scalar texture channels.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <variant>
+
+#include "image/image.hpp"
+
+namespace facet {
+
+// Custom header attributes ("facet:scene", "facet:spp", ...), written as EXR String, Double and Int
+// attributes. EXR ints are 32-bit: an int64_t outside that range is an error, not a silent wrap.
+using ExrMetadataValue = std::variant<std::string, double, std::int64_t>;
+using ExrMetadata = std::map<std::string, ExrMetadataValue>;
+
+enum class ExrPixelType { Half, Float };
+
+// Reject: a NaN or inf pixel (or, for Half, a value beyond the half range that would become inf)
+// is an error. Allow: written as is, e.g. to inspect a broken render.
+enum class NonFinite { Reject, Allow };
+
+// Writes channels R, G, B (ZIP compression) atomically: on failure the destination is untouched.
+void write_exr(const std::filesystem::path& path, const Image& image, const ExrMetadata& metadata, ExrPixelType type,
+               NonFinite non_finite = NonFinite::Reject);
+
+// Reads R, G, B (A is ignored) or, for a luminance-only file, Y as grey; half or float. The image
+// covers the data window. If `metadata` is given it receives the String, Double, Int and Float
+// attributes other than the ones every EXR header must have.
+Image read_exr(const std::filesystem::path& path, ExrMetadata* metadata = nullptr);
+
+// Reads one channel by name (e.g. "Y", "R", "Z") as a scalar texture.
+ScalarImage read_exr_scalar(const std::filesystem::path& path, const std::string& channel);
+
+}  // namespace facet

@@ -1,0 +1,50 @@
+// In-memory images: scene-linear RGB frames and single-channel planes.
+//
+// Both are row-major with the top row first, the layout of EXR scan lines and PNG rows.
+#pragma once
+
+#include <cstddef>
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace facet {
+
+// Scene-linear RGB, 3 floats per pixel.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgb;
+
+  Image() = default;
+  Image(int width_, int height_, glm::vec3 fill = glm::vec3(0.0f))
+      : width(width_), height(height_), rgb(3 * static_cast<std::size_t>(width_) * height_) {
+    for (std::size_t i = 0; i < pixel_count(); ++i) set(i, fill);
+  }
+
+  std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
+
+  glm::vec3 at(std::size_t pixel) const { return {rgb[3 * pixel], rgb[3 * pixel + 1], rgb[3 * pixel + 2]}; }
+  glm::vec3 at(int x, int y) const { return at(index(x, y)); }
+  void set(std::size_t pixel, glm::vec3 c) {
+    rgb[3 * pixel] = c.r;
+    rgb[3 * pixel + 1] = c.g;
+    rgb[3 * pixel + 2] = c.b;
+  }
+  void set(int x, int y, glm::vec3 c) { set(index(x, y), c); }
+};
+
+// One value per pixel: a texture channel, a height map, a per-pixel error.
+struct ScalarImage {
+  int width = 0, height = 0;
+  std::vector<float> values;
+
+  ScalarImage() = default;
+  ScalarImage(int width_, int height_, float fill = 0.0f)
+      : width(width_), height(height_), values(static_cast<std::size_t>(width_) * height_, fill) {}
+
+  std::size_t pixel_count() const { return values.size(); }
+  float at(int x, int y) const { return values[static_cast<std::size_t>(y) * width + x]; }
+  float& at(int x, int y) { return values[static_cast<std::size_t>(y) * width + x]; }
+};
+
+}  // namespace facet

@@ -1,0 +1,162 @@
+#include "image/png_io.hpp"
+
+#include <png.h>
+
+#include <cerrno>
+#include <cmath>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "image/atomic_file.hpp"
+#include "image/io_error.hpp"
+#include "image/srgb.hpp"
+
+namespace facet {
+namespace {
+
+// libpng reports errors by calling back and never returning. We longjmp back to the setjmp inside
+// one of the small functions below, which hold no C++ objects, so no destructor is skipped.
+struct PngErrorMessage {
+  char text[256] = "unknown libpng error";
+};
+
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
+  auto* error = static_cast<PngErrorMessage*>(png_get_error_ptr(png));
+  std::snprintf(error->text, sizeof error->text, "%s", message);
+  std::longjmp(png_jmpbuf(png), 1);
+}
+
+void on_png_warning(png_structp, png_const_charp) {}
+
+bool write_rgb8_rows(png_structp png, png_infop info, std::FILE* file, int width, int height, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_init_io(png, file);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, PNG_COLOR_TYPE_RGB,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  png_write_image(png, rows);
+  png_write_end(png, nullptr);
+  return true;
+}
+
+void write_rgb8(std::FILE* file, int width, int height, std::span<const std::uint8_t> rgb) {
+  if (width <= 0 || height <= 0)
+    throw std::runtime_error("cannot write an empty image (" + std::to_string(width) + "x" + std::to_string(height) +
+                             ")");
+  const std::size_t row_bytes = 3 * static_cast<std::size_t>(width);
+  if (rgb.size() != row_bytes * height)
+    throw std::runtime_error("got " + std::to_string(rgb.size()) + " bytes, expected " +
+                             std::to_string(row_bytes * height));
+  std::vector<png_bytep> rows(static_cast<std::size_t>(height));
+  for (int y = 0; y < height; ++y)
+    rows[y] = const_cast<png_bytep>(rgb.data() + y * row_bytes);  // libpng only reads them
+
+  PngErrorMessage error;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  const bool written = info != nullptr && write_rgb8_rows(png, info, file, width, height, rows.data());
+  png_destroy_write_struct(&png, &info);
+  if (!written) throw std::runtime_error(error.text);
+}
+
+// Header and layout of a PNG after the transforms that reduce it to 1 or 3 channels of 8 or 16 bits.
+struct PngLayout {
+  png_uint_32 width = 0, height = 0;
+  int channels = 0, bit_depth = 0;
+  std::size_t row_bytes = 0;
+};
+
+bool read_layout(png_structp png, png_infop info, std::FILE* file, PngLayout* layout) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_init_io(png, file);
+  png_set_sig_bytes(png, 8);
+  png_read_info(png, info);
+  const int color_type = png_get_color_type(png, info);
+  if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+  if (color_type == PNG_COLOR_TYPE_GRAY && png_get_bit_depth(png, info) < 8) png_set_expand_gray_1_2_4_to_8(png);
+  if (color_type & PNG_COLOR_MASK_ALPHA) png_set_strip_alpha(png);
+  png_read_update_info(png, info);
+  layout->width = png_get_image_width(png, info);
+  layout->height = png_get_image_height(png, info);
+  layout->channels = png_get_channels(png, info);
+  layout->bit_depth = png_get_bit_depth(png, info);
+  layout->row_bytes = png_get_rowbytes(png, info);
+  return true;
+}
+
+bool read_rows(png_structp png, png_infop info, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_read_image(png, rows);
+  png_read_end(png, info);
+  return true;
+}
+
+struct PngReader {
+  PngErrorMessage error;
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  ~PngReader() { png_destroy_read_struct(&png, &info, nullptr); }
+};
+
+struct FileCloser {
+  void operator()(std::FILE* file) const { std::fclose(file); }
+};
+
+}  // namespace
+
+void write_png_rgb8(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgb) {
+  write_file_atomically(path, [&](std::FILE* file) { write_rgb8(file, width, height, rgb); });
+}
+
+void write_png_preview(const std::filesystem::path& path, const Image& image, double exposure_stops) {
+  if (image.rgb.size() != 3 * image.pixel_count())
+    throw io_error(path, "image has " + std::to_string(image.rgb.size()) + " floats, expected 3 per pixel");
+  const double scale = std::exp2(exposure_stops);
+  std::vector<std::uint8_t> encoded(image.rgb.size());
+  for (std::size_t i = 0; i < encoded.size(); ++i) encoded[i] = srgb_display8(scale * image.rgb[i]);
+  write_png_rgb8(path, image.width, image.height, encoded);
+}
+
+PngImage read_png(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw io_error(path, "no such file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw io_error(path, "not a regular file");
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+  if (!file) throw io_error(path, std::string("cannot open: ") + std::strerror(errno));
+  png_byte signature[8] = {};
+  if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0)
+    throw io_error(path, "not a PNG file");
+
+  PngReader reader;
+  if (reader.info == nullptr) throw io_error(path, "libpng could not allocate its state");
+  PngLayout layout;
+  if (!read_layout(reader.png, reader.info, file.get(), &layout))
+    throw io_error(path, std::string("corrupt PNG header: ") + reader.error.text);
+  std::vector<png_byte> bytes(layout.row_bytes * layout.height);
+  std::vector<png_bytep> rows(layout.height);
+  for (png_uint_32 y = 0; y < layout.height; ++y) rows[y] = bytes.data() + y * layout.row_bytes;
+  if (!read_rows(reader.png, reader.info, rows.data()))
+    throw io_error(path, std::string("corrupt or truncated PNG data: ") + reader.error.text);
+
+  PngImage image{
+      static_cast<int>(layout.width), static_cast<int>(layout.height), layout.channels, layout.bit_depth, {}};
+  const std::size_t count = static_cast<std::size_t>(layout.width) * layout.height * layout.channels;
+  image.values.resize(count);
+  const std::size_t per_row = static_cast<std::size_t>(layout.width) * layout.channels;
+  for (png_uint_32 y = 0; y < layout.height; ++y) {
+    for (std::size_t i = 0; i < per_row; ++i) {
+      // 16-bit samples are stored big-endian.
+      image.values[y * per_row + i] = layout.bit_depth == 16
+                                          ? static_cast<float>(rows[y][2 * i] << 8 | rows[y][2 * i + 1]) / 65535.0f
+                                          : static_cast<float>(rows[y][i]) / 255.0f;
+    }
+  }
+  return image;
+}
+
+}  // namespace facet

@@ -1,0 +1,31 @@
+// PNG files: 8-bit sRGB previews and false-colour maps out; 8- and 16-bit grey or RGB textures in.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "image/image.hpp"
+
+namespace facet {
+
+// Display preview of a scene-linear image: each channel scaled by 2^exposure_stops, clamped to
+// [0,1], sRGB-encoded and rounded to 8 bits. Written atomically like write_exr.
+void write_png_preview(const std::filesystem::path& path, const Image& image, double exposure_stops = 0.0);
+
+// Already-encoded 8-bit RGB (3 bytes per pixel, top row first), e.g. a false-colour error map.
+void write_png_rgb8(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgb);
+
+// A PNG's stored values scaled to [0,1] (code / (2^bit_depth - 1)), without any transfer function
+// applied: colour textures decode them with srgb_decode, height maps use them as they are.
+struct PngImage {
+  int width = 0, height = 0;
+  int channels = 0;   // 1 (grey) or 3 (RGB); alpha is dropped, palettes are expanded to RGB
+  int bit_depth = 0;  // 8 or 16 as stored (1, 2 and 4-bit grey are widened to 8)
+  std::vector<float> values;
+};
+
+PngImage read_png(const std::filesystem::path& path);
+
+}  // namespace facet

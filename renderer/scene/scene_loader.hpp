@@ -1,0 +1,25 @@
+// Loads and validates a facet scene file (format: scenes/README.md).
+//
+// Every problem is a facet::Error with one line naming the file and the offending key,
+// e.g. "scenes/x.json: camera.width must be an integer in [1, 16384], got -4".
+#pragma once
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.hpp"
+
+namespace facet {
+
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr int kMaxJsonDepth = 64;
+
+// Reads, parses and validates `file`; mesh paths are relative to its directory.
+Scene load_scene(const std::filesystem::path& file);
+
+// Validates an already parsed document; `source` names it in messages and anchors
+// relative mesh paths (an empty source means the current directory).
+Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& source);
+
+}  // namespace facet

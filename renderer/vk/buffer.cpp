@@ -1,0 +1,95 @@
+#include "vk/buffer.hpp"
+
+#include <cstring>
+#include <utility>
+
+#include "common/error.hpp"
+
+namespace facet::vk {
+
+Buffer::Buffer(Context& context, VkDeviceSize bytes)
+    : Buffer(context, bytes,
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                 VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+             false) {}
+
+Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, bool host_visible)
+    : context_(&context), size_(bytes) {
+  if (bytes == 0) throw Error("internal: a Vulkan buffer of 0 bytes was requested");
+  VkDevice device = context.device();
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = bytes;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  check(vkCreateBuffer(device, &info, nullptr, &buffer_), "vkCreateBuffer");
+  try {
+    VkMemoryRequirements needs;
+    vkGetBufferMemoryRequirements(device, buffer_, &needs);
+    constexpr VkMemoryPropertyFlags kMappable =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    uint32_t type = host_visible
+                        ? context.memory_type(needs.memoryTypeBits, kMappable, 0)
+                        : context.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+                                              kMappable);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = needs.size;
+    alloc.memoryTypeIndex = type;
+    check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
+    check(vkBindBufferMemory(device, buffer_, memory_, 0), "vkBindBufferMemory");
+    VkMemoryType properties = [&] {
+      VkPhysicalDeviceMemoryProperties memory;
+      vkGetPhysicalDeviceMemoryProperties(context.physical_device(), &memory);
+      return memory.memoryTypes[type];
+    }();
+    if ((properties.propertyFlags & kMappable) == kMappable)
+      check(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
+  } catch (...) {
+    if (memory_) vkFreeMemory(device, memory_, nullptr);
+    vkDestroyBuffer(device, buffer_, nullptr);
+    throw;
+  }
+}
+
+Buffer::Buffer(Buffer&& other) noexcept
+    : context_(other.context_),
+      size_(other.size_),
+      buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
+      memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
+      mapped_(std::exchange(other.mapped_, nullptr)) {}
+
+Buffer::~Buffer() {
+  if (buffer_) vkDestroyBuffer(context_->device(), buffer_, nullptr);
+  if (memory_) vkFreeMemory(context_->device(), memory_, nullptr);
+}
+
+void Buffer::copy(VkBuffer from, VkBuffer to, VkDeviceSize bytes, VkDeviceSize from_offset,
+                  VkDeviceSize to_offset) const {
+  context_->submit_and_wait([&](VkCommandBuffer cmd) {
+    VkBufferCopy region{from_offset, to_offset, bytes};
+    vkCmdCopyBuffer(cmd, from, to, 1, &region);
+  });
+}
+
+void Buffer::upload(const void* data, VkDeviceSize bytes, VkDeviceSize offset) {
+  if (offset + bytes > size_) throw Error("internal: upload beyond the end of a Vulkan buffer");
+  if (mapped_) {
+    std::memcpy(static_cast<char*>(mapped_) + offset, data, bytes);
+    return;
+  }
+  Buffer staging(*context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+  std::memcpy(staging.mapped_, data, bytes);
+  copy(staging.buffer_, buffer_, bytes, 0, offset);
+}
+
+void Buffer::download(void* data, VkDeviceSize bytes, VkDeviceSize offset) const {
+  if (offset + bytes > size_) throw Error("internal: download beyond the end of a Vulkan buffer");
+  if (mapped_) {
+    std::memcpy(data, static_cast<const char*>(mapped_) + offset, bytes);
+    return;
+  }
+  Buffer staging(*context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+  copy(buffer_, staging.buffer_, bytes, offset, 0);
+  std::memcpy(data, staging.mapped_, bytes);
+}
+
+}  // namespace facet::vk

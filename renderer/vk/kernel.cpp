@@ -1,0 +1,130 @@
+#include "vk/kernel.hpp"
+
+#include "common/error.hpp"
+
+namespace facet::vk {
+
+Kernel::Kernel(Context& context, const KernelDesc& desc)
+    : context_(&context),
+      name_(desc.name),
+      buffer_count_(desc.buffer_count),
+      push_constant_bytes_(desc.push_constant_bytes) {
+  VkDevice device = context.device();
+  if (desc.push_constant_bytes > context.limits().maxPushConstantsSize)
+    throw Error("kernel " + name_ + ": push constants exceed the device limit");
+
+  std::vector<VkDescriptorSetLayoutBinding> bindings(desc.buffer_count);
+  for (uint32_t i = 0; i < desc.buffer_count; ++i)
+    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  set_info.bindingCount = desc.buffer_count;
+  set_info.pBindings = bindings.data();
+  check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout_),
+        "vkCreateDescriptorSetLayout");
+
+  VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, desc.push_constant_bytes};
+  VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layout_info.setLayoutCount = 1;
+  layout_info.pSetLayouts = &set_layout_;
+  layout_info.pushConstantRangeCount = desc.push_constant_bytes > 0 ? 1 : 0;
+  layout_info.pPushConstantRanges = &range;
+  check(vkCreatePipelineLayout(device, &layout_info, nullptr, &layout_), "vkCreatePipelineLayout");
+
+  VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  module_info.codeSize = desc.spirv.size_bytes();
+  module_info.pCode = desc.spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  check(vkCreateShaderModule(device, &module_info, nullptr, &module), "vkCreateShaderModule");
+
+  std::vector<VkSpecializationMapEntry> entries;
+  std::vector<uint32_t> values;
+  for (const auto& constant : desc.specialization) {
+    entries.push_back({constant.id, static_cast<uint32_t>(values.size() * sizeof(uint32_t)),
+                       sizeof(uint32_t)});
+    values.push_back(constant.value);
+  }
+  VkSpecializationInfo specialization{static_cast<uint32_t>(entries.size()), entries.data(),
+                                      values.size() * sizeof(uint32_t), values.data()};
+  VkComputePipelineCreateInfo pipeline_info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  pipeline_info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  pipeline_info.stage.module = module;
+  pipeline_info.stage.pName = "main";
+  pipeline_info.stage.pSpecializationInfo = entries.empty() ? nullptr : &specialization;
+  pipeline_info.layout = layout_;
+  VkResult result =
+      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline_);
+  vkDestroyShaderModule(device, module, nullptr);
+  if (result != VK_SUCCESS) {
+    vkDestroyPipelineLayout(device, layout_, nullptr);
+    vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+    check(result, ("vkCreateComputePipelines (" + name_ + ")").c_str());
+  }
+}
+
+Kernel::~Kernel() {
+  VkDevice device = context_->device();
+  vkDestroyPipeline(device, pipeline_, nullptr);
+  vkDestroyPipelineLayout(device, layout_, nullptr);
+  vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+}
+
+double Kernel::dispatch(std::span<const Buffer* const> buffers, const void* push, glm::uvec3 groups) {
+  if (buffers.size() != buffer_count_)
+    throw Error("internal: kernel " + name_ + " expects " + std::to_string(buffer_count_) +
+                " buffers, got " + std::to_string(buffers.size()));
+  const auto& limits = context_->limits();
+  for (int axis = 0; axis < 3; ++axis)
+    if (groups[axis] > limits.maxComputeWorkGroupCount[axis])
+      throw Error("kernel " + name_ + ": dispatch of " + std::to_string(groups[axis]) +
+                  " workgroups exceeds the device limit");
+  for (const Buffer* buffer : buffers)
+    if (buffer->size() > limits.maxStorageBufferRange)
+      throw Error("kernel " + name_ + ": a buffer of " + std::to_string(buffer->size()) +
+                  " bytes exceeds the device's storage buffer range of " +
+                  std::to_string(limits.maxStorageBufferRange) + " bytes");
+
+  VkDevice device = context_->device();
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = context_->descriptor_pool();
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &set_layout_;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  check(vkAllocateDescriptorSets(device, &alloc, &set), "vkAllocateDescriptorSets");
+  struct Release {
+    VkDevice device;
+    VkDescriptorPool pool;
+    VkDescriptorSet set;
+    ~Release() { vkFreeDescriptorSets(device, pool, 1, &set); }
+  } release{device, context_->descriptor_pool(), set};
+
+  std::vector<VkDescriptorBufferInfo> infos(buffers.size());
+  std::vector<VkWriteDescriptorSet> writes(buffers.size());
+  for (uint32_t i = 0; i < buffers.size(); ++i) {
+    infos[i] = {buffers[i]->handle(), 0, VK_WHOLE_SIZE};
+    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[i].dstSet = set;
+    writes[i].dstBinding = i;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[i].pBufferInfo = &infos[i];
+  }
+  vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+
+  return context_->submit_and_wait([&](VkCommandBuffer cmd) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
+    if (push_constant_bytes_ > 0)
+      vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, push_constant_bytes_, push);
+    vkCmdDispatch(cmd, groups.x, groups.y, groups.z);
+    // Make the shader's writes visible to host reads and to later transfers.
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier,
+                         0, nullptr, 0, nullptr);
+  });
+}
+
+}  // namespace facet::vk

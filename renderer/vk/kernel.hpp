@@ -1,0 +1,56 @@
+// A compute kernel: a SPIR-V module specialised into a pipeline, with storage buffers at
+// bindings 0..N-1 of set 0 and an optional push-constant block.
+//
+// Specialization constants select features at pipeline creation, so a scene compiles only
+// what it uses. Each dispatch() is its own submission, so callers split long work into
+// tiles and no single submission runs for seconds.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "vk/buffer.hpp"
+#include "vk/context.hpp"
+
+namespace facet::vk {
+
+struct SpecConstant {
+  uint32_t id;
+  uint32_t value;  // 32-bit: int, uint, bool (0/1) or a float's bits
+};
+
+struct KernelDesc {
+  std::string name;  // for error messages
+  std::span<const uint32_t> spirv;
+  uint32_t buffer_count = 0;
+  uint32_t push_constant_bytes = 0;
+  std::vector<SpecConstant> specialization;
+};
+
+class Kernel {
+ public:
+  Kernel(Context& context, const KernelDesc& desc);
+  ~Kernel();
+  Kernel(const Kernel&) = delete;
+  Kernel& operator=(const Kernel&) = delete;
+
+  // Binds buffers[i] at binding i, pushes `push` (push_constant_bytes of it), dispatches
+  // `groups` workgroups and waits. Returns the GPU time in milliseconds.
+  double dispatch(std::span<const Buffer* const> buffers, const void* push, glm::uvec3 groups);
+
+ private:
+  Context* context_;
+  std::string name_;
+  uint32_t buffer_count_;
+  uint32_t push_constant_bytes_;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+}  // namespace facet::vk

@@ -1,0 +1,291 @@
+// OpenEXR round trips (float exact, half against an independent model of half rounding), metadata,
+// atomic writes and the errors every bad input must give.
+#include "image/exr_io.hpp"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "common/error.hpp"
+#include "run_command.hpp"
+#include "temp_dir.hpp"
+
+namespace facet {
+namespace {
+
+using test::TempDir;
+
+// Values that exercise sign, the half subnormal range, ties, large magnitudes and zero.
+Image awkward_image() {
+  const float values[] = {0.0f,
+                          -0.0f,
+                          1.0f,
+                          -2.5f,
+                          0.1f,
+                          1.0f / 3.0f,
+                          1e-5f,
+                          3e-8f,
+                          6.0e-5f,
+                          1.0f + 0x1p-11f,
+                          1.0f + 3 * 0x1p-11f,
+                          1000.7f,
+                          65504.0f,
+                          65519.0f,
+                          -65000.3f,
+                          0.18f};
+  constexpr int count = sizeof values / sizeof values[0];
+  Image image(count, 2);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < count; ++x) {
+      const float v = values[x] * (y == 0 ? 1.0f : -0.5f);
+      image.set(x, y, glm::vec3(v, 0.5f * v, v + 0.25f));
+    }
+  return image;
+}
+
+// IEEE binary16 rounding modelled directly: 11 significant bits for normal numbers (|v| >= 2^-14),
+// a fixed step of 2^-24 below, round to nearest with ties to even (std::nearbyint in the default mode).
+float round_to_half(float v) {
+  const double magnitude = std::abs(static_cast<double>(v));
+  const double step = magnitude < 0x1p-14 ? 0x1p-24 : std::exp2(std::floor(std::log2(magnitude)) - 10);
+  return static_cast<float>(std::nearbyint(static_cast<double>(v) / step) * step);
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void expect_one_line_naming(const Error& e, const std::filesystem::path& path) {
+  const std::string message = e.what();
+  EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(ExrIo, FloatRoundTripIsExact) {
+  TempDir dir;
+  const Image image = awkward_image();
+  write_exr(dir / "f.exr", image, {}, ExrPixelType::Float);
+  const Image back = read_exr(dir / "f.exr");
+  ASSERT_EQ(back.width, image.width);
+  ASSERT_EQ(back.height, image.height);
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    EXPECT_EQ(back.rgb[i], image.rgb[i]) << "sample " << i;
+    EXPECT_EQ(std::signbit(back.rgb[i]), std::signbit(image.rgb[i])) << "sample " << i;
+  }
+}
+
+TEST(ExrIo, HalfRoundTripMatchesHalfRounding) {
+  TempDir dir;
+  const Image image = awkward_image();
+  write_exr(dir / "h.exr", image, {}, ExrPixelType::Half);
+  const Image back = read_exr(dir / "h.exr");
+  ASSERT_EQ(back.rgb.size(), image.rgb.size());
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    EXPECT_EQ(back.rgb[i], round_to_half(image.rgb[i])) << "sample " << i << " = " << image.rgb[i];
+    // Round to nearest: the error is at most half a step, i.e. 2^-11 relative for normal values.
+    EXPECT_LE(std::abs(back.rgb[i] - image.rgb[i]), std::max(std::abs(image.rgb[i]) * 0x1p-11f, 0x1p-25f));
+  }
+  // Spot checks of the model itself: a tie rounds to even, 0.1 to its known half value.
+  EXPECT_EQ(round_to_half(1.0f + 0x1p-11f), 1.0f);
+  EXPECT_EQ(round_to_half(1.0f + 3 * 0x1p-11f), 1.0f + 0x1p-9f);
+  EXPECT_EQ(round_to_half(0.1f), 0.0999755859375f);
+}
+
+TEST(ExrIo, MetadataRoundTrip) {
+  TempDir dir;
+  const ExrMetadata metadata = {{"facet:scene", std::string("cornell-box v1")},
+                                {"facet:method", std::string("gpu/analytic")},
+                                {"facet:spp", std::int64_t{64}},
+                                {"facet:render_ms", 1234.5678901234},
+                                {"facet:device", std::string("llvmpipe")},
+                                {"facet:version", std::string("0.1.0")},
+                                {"facet:offset", std::int64_t{-2147483648LL}},
+                                {"facet:tiny", 1e-300},
+                                {"facet:empty", std::string()}};
+  write_exr(dir / "m.exr", Image(3, 2, glm::vec3(0.5f)), metadata, ExrPixelType::Half);
+  ExrMetadata back;
+  read_exr(dir / "m.exr", &back);
+  EXPECT_EQ(back, metadata);
+}
+
+TEST(ExrIo, MetadataIntOutsideInt32IsRejected) {
+  TempDir dir;
+  EXPECT_THROW(write_exr(dir / "big.exr", Image(1, 1), {{"facet:n", std::int64_t{1} << 31}}, ExrPixelType::Float),
+               Error);
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(ExrIo, FailedWriteIntoMissingDirectoryLeavesNothing) {
+  TempDir dir;
+  const auto path = dir / "missing" / "x.exr";
+  try {
+    write_exr(path, Image(2, 2), {}, ExrPixelType::Float);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    expect_one_line_naming(e, path);
+  }
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(ExrIo, FailedWriteWhereParentIsAFileLeavesNothing) {
+  TempDir dir;
+  std::ofstream(dir / "plain").put('x');
+  const auto path = dir / "plain" / "x.exr";
+  try {
+    write_exr(path, Image(2, 2), {}, ExrPixelType::Float);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    expect_one_line_naming(e, path);
+  }
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"plain"});
+}
+
+TEST(ExrIo, FailedOverwriteKeepsPreviousFileAndNoTemporary) {
+  TempDir dir;
+  const auto path = dir / "keep.exr";
+  write_exr(path, Image(2, 2, glm::vec3(1.0f)), {}, ExrPixelType::Float);
+  const std::string before = read_bytes(path);
+  Image broken(2, 2, glm::vec3(1.0f));
+  broken.set(1, 1, glm::vec3(1.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f));
+  try {
+    write_exr(path, broken, {}, ExrPixelType::Float);
+    FAIL() << "NaN accepted";
+  } catch (const Error& e) {
+    expect_one_line_naming(e, path);
+    EXPECT_NE(std::string(e.what()).find("(1, 1)"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_bytes(path), before);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"keep.exr"});
+}
+
+TEST(ExrIo, NonFiniteRejectedOrAllowedOnRequest) {
+  TempDir dir;
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_THROW(write_exr(dir / "i.exr", Image(1, 1, glm::vec3(inf)), {}, ExrPixelType::Float), Error);
+  // Finite in float but rounding beyond the largest half (65504), i.e. >= 65520, would silently
+  // become inf in a half file.
+  EXPECT_THROW(write_exr(dir / "o.exr", Image(1, 1, glm::vec3(65520.0f)), {}, ExrPixelType::Half), Error);
+  EXPECT_THROW(write_exr(dir / "o.exr", Image(1, 1, glm::vec3(-65520.0f)), {}, ExrPixelType::Half), Error);
+  write_exr(dir / "o.exr", Image(1, 1, glm::vec3(65520.0f)), {}, ExrPixelType::Float);
+  EXPECT_TRUE(dir.entries() == std::vector<std::string>{"o.exr"});
+
+  Image nan(1, 2, glm::vec3(std::numeric_limits<float>::quiet_NaN()));
+  nan.set(0, 1, glm::vec3(-inf));
+  write_exr(dir / "n.exr", nan, {}, ExrPixelType::Half, NonFinite::Allow);
+  const Image back = read_exr(dir / "n.exr");
+  EXPECT_TRUE(std::isnan(back.at(0, 0).g));
+  EXPECT_EQ(back.at(0, 1).b, -inf);
+}
+
+TEST(ExrIo, EmptyOrMisshapenImageIsRejected) {
+  TempDir dir;
+  EXPECT_THROW(write_exr(dir / "e.exr", Image(), {}, ExrPixelType::Float), Error);
+  Image short_buffer(2, 2);
+  short_buffer.rgb.pop_back();
+  EXPECT_THROW(write_exr(dir / "s.exr", short_buffer, {}, ExrPixelType::Float), Error);
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(ExrIo, BadInputsGiveOneLineErrorNamingThePath) {
+  TempDir dir;
+  std::ofstream(dir / "garbage.exr") << "this is not an image\n";
+  write_exr(dir / "whole.exr", Image(64, 64, glm::vec3(0.3f)), {}, ExrPixelType::Float);
+  const std::string whole = read_bytes(dir / "whole.exr");
+  std::ofstream(dir / "truncated.exr", std::ios::binary) << whole.substr(0, whole.size() / 2);
+  std::filesystem::create_directory(dir / "folder.exr");
+  for (const char* name : {"missing.exr", "garbage.exr", "truncated.exr", "folder.exr"}) {
+    SCOPED_TRACE(name);
+    try {
+      read_exr(dir / name);
+      FAIL() << "no error";
+    } catch (const Error& e) {
+      expect_one_line_naming(e, dir / name);
+    }
+    EXPECT_THROW(read_exr_scalar(dir / name, "R"), Error);
+  }
+}
+
+// Files facet does not write itself, made with OpenEXR directly: a Y-only image with an offset data
+// window, and an RGBA image.
+void write_channels(const std::filesystem::path& path, const Imath::Box2i& window,
+                    const std::vector<std::pair<std::string, std::vector<float>>>& planes, Imf::PixelType type) {
+  Imf::Header header(window, window);
+  Imf::FrameBuffer frame;
+  for (const auto& [name, plane] : planes) {
+    header.channels().insert(name, Imf::Channel(type));
+    frame.insert(name, Imf::Slice::Make(Imf::FLOAT, plane.data(), window));
+  }
+  Imf::OutputFile out(path.c_str(), header);
+  out.setFrameBuffer(frame);
+  out.writePixels(window.max.y - window.min.y + 1);
+}
+
+TEST(ExrIo, LuminanceOnlyReadsAsGreyAndAsScalar) {
+  TempDir dir;
+  const Imath::Box2i window({-2, 5}, {1, 6});  // 4x2, origin not at (0,0)
+  const std::vector<float> y = {0.0f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f, 8.0f, 16.0f};
+  write_channels(dir / "y.exr", window, {{"Y", y}}, Imf::FLOAT);
+  const Image grey = read_exr(dir / "y.exr");
+  ASSERT_EQ(grey.width, 4);
+  ASSERT_EQ(grey.height, 2);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(grey.at(static_cast<std::size_t>(i)), glm::vec3(y[i])) << i;
+  const ScalarImage scalar = read_exr_scalar(dir / "y.exr", "Y");
+  EXPECT_EQ(scalar.values, y);
+  try {
+    read_exr_scalar(dir / "y.exr", "Z");
+    FAIL() << "missing channel accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'Z'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ExrIo, RgbaReadsAsRgbAndChannelsAsScalars) {
+  TempDir dir;
+  const Imath::Box2i window({0, 0}, {1, 0});
+  write_channels(dir / "rgba.exr", window,
+                 {{"R", {1.0f, 2.0f}}, {"G", {3.0f, 4.0f}}, {"B", {5.0f, 6.0f}}, {"A", {0.5f, 0.5f}}}, Imf::FLOAT);
+  const Image image = read_exr(dir / "rgba.exr");
+  EXPECT_EQ(image.rgb, (std::vector<float>{1, 3, 5, 2, 4, 6}));
+  EXPECT_EQ(read_exr_scalar(dir / "rgba.exr", "G").values, (std::vector<float>{3, 4}));
+  write_channels(dir / "z.exr", window, {{"Z", {1.0f, 2.0f}}}, Imf::FLOAT);
+  EXPECT_THROW(read_exr(dir / "z.exr"), Error);
+}
+
+// A third-party reader (OpenImageIO) sees our metadata and the same pixels.
+TEST(ExrIo, OpenImageIoReadsMetadataAndPixels) {
+  TempDir dir;
+  Image image(9, 7);
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = 0.01f * static_cast<float>(i % 97);
+  write_exr(
+      dir / "a.exr", image,
+      {{"facet:scene", std::string("cornell-box v1")}, {"facet:spp", std::int64_t{64}}, {"facet:render_ms", 12.5}},
+      ExrPixelType::Half);
+  const auto info = test::run_command("oiiotool --info -v " + (dir / "a.exr").string());
+  ASSERT_EQ(info.status, 0) << info.output;
+  EXPECT_NE(info.output.find("facet:scene: \"cornell-box v1\""), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("facet:spp: 64"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("facet:render_ms: 12.5"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("9 x    7, 3 channel, half"), std::string::npos) << info.output;
+
+  // Same pixels, other metadata and a float file: idiff compares pixels only and must pass exactly.
+  Image halved = image;
+  for (float& v : halved.rgb) v = round_to_half(v);
+  write_exr(dir / "b.exr", halved, {{"facet:scene", std::string("other")}}, ExrPixelType::Float);
+  const auto same = test::run_command("idiff -fail 0 " + (dir / "a.exr").string() + " " + (dir / "b.exr").string());
+  EXPECT_EQ(same.status, 0) << same.output;
+  // And it must notice one pixel changed by 1e-3.
+  halved.rgb[40] += 1e-3f;
+  write_exr(dir / "c.exr", halved, {}, ExrPixelType::Float);
+  const auto changed = test::run_command("idiff " + (dir / "a.exr").string() + " " + (dir / "c.exr").string());
+  EXPECT_NE(changed.status, 0) << changed.output;
+}
+
+}  // namespace
+}  // namespace facet
