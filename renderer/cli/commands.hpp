@@ -19,5 +19,8 @@ void add_device_options(CLI::App& command, DeviceOptions& options);
 
 void add_render_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);
+void add_make_command(CLI::App& app, Action& action);
+void add_compare_command(CLI::App& app, Action& action);
+void add_eval_command(CLI::App& app, Action& action);
 
 }  // namespace facet::cli

@@ -11,6 +11,9 @@ int main(int argc, char** argv) {
   facet::cli::Action action;
   facet::cli::add_render_command(app, action);
   facet::cli::add_info_command(app, action);
+  facet::cli::add_make_command(app, action);
+  facet::cli::add_compare_command(app, action);
+  facet::cli::add_eval_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

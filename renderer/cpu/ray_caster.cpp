@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -88,8 +89,8 @@ Hit analytic_hit(const Scene& scene, const AnalyticHit& a, const glm::dvec3& o, 
   } else {
     const Plane& p = scene.planes[a.index];
     hit.position = o + a.t * d;
-    hit.geometric_normal = p.normal;
-    const auto [t1, t2] = tangent_frame(p.normal);
+    hit.geometric_normal = glm::normalize(p.normal);  // unit from the loader, not always from code
+    const auto [t1, t2] = tangent_frame(hit.geometric_normal);
     hit.uv = {glm::dot(hit.position - p.point, t1), glm::dot(hit.position - p.point, t2)};
     hit.material = p.material;
   }
@@ -102,7 +103,8 @@ Hit analytic_hit(const Scene& scene, const AnalyticHit& a, const glm::dvec3& o, 
 // and t are the fallback when the double test degenerates (det == 0).
 Hit mesh_hit(const Mesh& mesh, uint32_t triangle, const RTCHit& h, float t_float, const glm::dvec3& o,
              const glm::dvec3& d) {
-  const uint32_t i0 = mesh.indices[3 * triangle], i1 = mesh.indices[3 * triangle + 1], i2 = mesh.indices[3 * triangle + 2];
+  const uint32_t i0 = mesh.indices[3 * triangle], i1 = mesh.indices[3 * triangle + 1],
+                 i2 = mesh.indices[3 * triangle + 2];
   const glm::dvec3 p0 = mesh.positions[i0], e1 = mesh.positions[i1] - p0, e2 = mesh.positions[i2] - p0;
   double b1 = h.u, b2 = h.v, t = t_float;
   const glm::dvec3 pvec = glm::cross(d, e2);
@@ -111,7 +113,8 @@ Hit mesh_hit(const Mesh& mesh, uint32_t triangle, const RTCHit& h, float t_float
     const glm::dvec3 tvec = o - p0, qvec = glm::cross(tvec, e1);
     b1 = glm::dot(tvec, pvec) / det;
     b2 = glm::dot(d, qvec) / det;
-    t = glm::dot(e2, qvec) / det;
+    // Embree found t > 0 in float; a ray starting on the triangle may round to t <= 0 here.
+    t = std::max(glm::dot(e2, qvec) / det, std::numeric_limits<double>::denorm_min());
   }
   // Embree decided the hit in float; keep the refined point inside the triangle.
   b1 = glm::clamp(b1, 0.0, 1.0);
@@ -159,10 +162,10 @@ RayCaster::RayCaster(const Scene& scene) : scene_(scene), embree_(std::make_uniq
     check_mesh(mesh);  // the queries index vertices and attributes without further checks
     if (mesh.triangle_count() == 0) continue;
     RTCGeometry geometry = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangle_count()));
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), mesh.positions.size()));
+    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                   3 * sizeof(uint32_t), mesh.triangle_count()));
     if (vertices == nullptr || indices == nullptr) {
       rtcReleaseGeometry(geometry);
       throw Error("cannot allocate Embree buffers for mesh " + mesh.name);
@@ -170,7 +173,8 @@ RayCaster::RayCaster(const Scene& scene) : scene_(scene), embree_(std::make_uniq
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
       for (int k = 0; k < 3; ++k) vertices[3 * v + static_cast<size_t>(k)] = static_cast<float>(mesh.positions[v][k]);
     }
-    std::copy(mesh.indices.begin(), mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * mesh.triangle_count()), indices);
+    std::copy(mesh.indices.begin(), mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * mesh.triangle_count()),
+              indices);
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(embree_->scene, geometry, static_cast<unsigned>(m));  // geomID = mesh index
     rtcReleaseGeometry(geometry);
@@ -198,7 +202,8 @@ std::optional<Hit> RayCaster::intersect(glm::dvec3 o, glm::dvec3 d, double t_max
   std::optional<Hit> best;
   if (analytic.t > 0.0) best = analytic_hit(scene_, analytic, o, d);
   if (ray_hit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
-    const Hit mesh = mesh_hit(scene_.meshes[ray_hit.hit.geomID], ray_hit.hit.primID, ray_hit.hit, ray_hit.ray.tfar, o, d);
+    const Hit mesh =
+        mesh_hit(scene_.meshes[ray_hit.hit.geomID], ray_hit.hit.primID, ray_hit.hit, ray_hit.ray.tfar, o, d);
     if (!best || mesh.t < best->t) best = mesh;
   }
   return best;

@@ -153,9 +153,9 @@ Bvh build_bvh(const std::vector<Mesh>& meshes) {
     if (split.axis >= 0) {
       const auto first = prims.begin() + static_cast<std::ptrdiff_t>(task.begin);
       const auto last = prims.begin() + static_cast<std::ptrdiff_t>(task.end);
-      middle = static_cast<size_t>(std::partition(first, last, [&](const Primitive& p) {
-                                     return p.centroid[split.axis] < split.position;
-                                   }) - prims.begin());
+      middle = static_cast<size_t>(
+          std::partition(first, last, [&](const Primitive& p) { return p.centroid[split.axis] < split.position; }) -
+          prims.begin());
       // Binning and this comparison can disagree in the last bit; never make an empty child.
       if (middle == task.begin || middle == task.end) middle = task.begin + count / 2;
     } else {

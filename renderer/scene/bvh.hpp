@@ -21,8 +21,7 @@ struct BvhNode {
   uint32_t count;
 };
 static_assert(sizeof(BvhNode) == 32);
-static_assert(offsetof(BvhNode, left_or_first) == 12 && offsetof(BvhNode, hi) == 16 &&
-              offsetof(BvhNode, count) == 28);
+static_assert(offsetof(BvhNode, left_or_first) == 12 && offsetof(BvhNode, hi) == 16 && offsetof(BvhNode, count) == 28);
 
 struct BvhTriangleRef {
   uint32_t mesh;

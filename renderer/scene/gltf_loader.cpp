@@ -1,8 +1,13 @@
 #include "scene/gltf_loader.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <glm/gtc/quaternion.hpp>
@@ -18,8 +23,7 @@ namespace facet {
 namespace {
 
 // facet renders no textures: skip decoding embedded images instead of failing on them.
-bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*,
-                  int, void*) {
+bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
   return true;
 }
 
@@ -39,22 +43,65 @@ std::string one_line(std::string text) {
   return text;
 }
 
+// glTF JSON is nested a handful of levels; tinygltf walks `extras` recursively, so a deeply
+// nested document would overflow the stack there. Counted outside strings.
+constexpr int kMaxGltfJsonDepth = 64;
+
+int json_nesting_depth(std::string_view json) {
+  int depth = 0, max_depth = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : json) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      max_depth = std::max(max_depth, ++depth);
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return max_depth;
+}
+
+// The JSON chunk of a .glb (glTF 2.0 §4.4: 12-byte header, then chunk length, type "JSON");
+// empty if the header is malformed, which tinygltf then reports.
+std::string_view glb_json_chunk(const std::string& bytes) {
+  if (bytes.size() < 20) return {};
+  uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return std::string_view(bytes).substr(20, length);
+}
+
 tinygltf::Model load_model(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) throw Error("cannot open (no such file)");
   const std::string extension = file.extension().string();
+  if (extension != ".gltf" && extension != ".glb") throw Error("mesh files must end in .gltf or .glb");
+  std::ifstream in(file, std::ios::binary);
+  std::error_code ec;
+  if (!in || !std::filesystem::is_regular_file(file, ec)) throw Error("cannot open (no such file)");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.size() > std::numeric_limits<unsigned int>::max()) throw Error("file is larger than 4 GiB");
+  const bool binary = extension == ".glb";
+  if (json_nesting_depth(binary ? glb_json_chunk(bytes) : std::string_view(bytes)) > kMaxGltfJsonDepth) {
+    throw Error("invalid glTF: JSON nested deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
+  }
+
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(ignore_image, nullptr);
   tinygltf::Model model;
   std::string err, warn;
-  bool ok = false;
-  if (extension == ".gltf") {
-    ok = loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
-  } else if (extension == ".glb") {
-    ok = loader.LoadBinaryFromFile(&model, &err, &warn, file.string());
-  } else {
-    throw Error("mesh files must end in .gltf or .glb");
-  }
+  const std::string base_dir = file.parent_path().string();  // for external buffers
+  const auto size = static_cast<unsigned int>(bytes.size());
+  const bool ok = binary
+                      ? loader.LoadBinaryFromMemory(
+                            &model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, base_dir)
+                      : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, base_dir);
   if (!ok) throw Error("invalid glTF: " + one_line(err.empty() ? std::string("unknown error") : err));
   if (!model.extensionsRequired.empty()) {
     std::string names;
@@ -89,81 +136,77 @@ glm::dmat4 local_transform(const tinygltf::Node& node, size_t index) {
   return m;
 }
 
-glm::dvec3 at3(const AccessorData& a, size_t i) {
-  return {a.values[3 * i], a.values[3 * i + 1], a.values[3 * i + 2]};
+// Attribute `key` as vectors of N finite components, one per vertex (`vertex_count`, unless
+// this is POSITION, which defines it); empty if the primitive does not have it.
+template <glm::length_t N>
+std::vector<glm::vec<N, double>> read_attribute(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                                const char* key, const std::string& name, size_t vertex_count) {
+  const auto it = primitive.attributes.find(key);
+  if (it == primitive.attributes.end()) return {};
+  constexpr int kType = N == 2 ? TINYGLTF_TYPE_VEC2 : N == 3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4;
+  const std::string what = name + " " + key;
+  const AccessorData a = read_accessor(model, it->second, kType, false, what);
+  if (std::string(key) != "POSITION" && a.count != vertex_count) {
+    throw Error(what + ": has " + std::to_string(a.count) + " elements, POSITION has " + std::to_string(vertex_count));
+  }
+  std::vector<glm::vec<N, double>> out(a.count);
+  for (size_t i = 0; i < a.count; ++i) {
+    for (glm::length_t c = 0; c < N; ++c) out[i][c] = a.values[N * i + static_cast<size_t>(c)];
+    if (!all_finite(out[i])) throw Error(what + ": element " + std::to_string(i) + " is not finite");
+  }
+  return out;
+}
+
+std::vector<uint32_t> read_indices(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                   const std::string& name, size_t vertex_count) {
+  std::vector<uint32_t> indices;
+  if (primitive.indices < 0) {  // non-indexed: consecutive vertex triples
+    for (size_t i = 0; i < vertex_count; ++i) indices.push_back(static_cast<uint32_t>(i));
+    return indices;
+  }
+  const AccessorData a = read_accessor(model, primitive.indices, TINYGLTF_TYPE_SCALAR, true, name + " indices");
+  indices.reserve(a.count);
+  for (size_t i = 0; i < a.count; ++i) {
+    const double index = a.values[i];
+    if (index < 0.0 || index >= static_cast<double>(vertex_count)) {
+      throw Error(name + " indices: index " + std::to_string(i) + " = " +
+                  std::to_string(static_cast<long long>(index)) + " is outside [0, " + std::to_string(vertex_count) +
+                  ")");
+    }
+    indices.push_back(static_cast<uint32_t>(index));
+  }
+  return indices;
 }
 
 Mesh read_primitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const std::string& name) {
   if (primitive.mode != TINYGLTF_MODE_TRIANGLES) {
     throw Error(name + ": mode " + std::to_string(primitive.mode) + " is not supported (only triangles, mode 4)");
   }
-  const auto attribute = [&](const char* key) {
-    const auto it = primitive.attributes.find(key);
-    return it == primitive.attributes.end() ? -1 : it->second;
-  };
-  const auto what = [&](const char* key) { return name + " " + key; };
-  if (attribute("POSITION") < 0) throw Error(name + ": has no POSITION attribute");
-
   Mesh mesh;
   mesh.name = name;
-  const AccessorData positions = read_accessor(model, attribute("POSITION"), TINYGLTF_TYPE_VEC3, false, what("POSITION"));
-  const size_t n = positions.count;
+  mesh.positions = read_attribute<3>(model, primitive, "POSITION", name, 0);
+  const size_t n = mesh.positions.size();
+  if (n == 0) throw Error(name + ": has no POSITION attribute");
   if (n > std::numeric_limits<uint32_t>::max()) throw Error(name + ": too many vertices");
-  const auto check_count = [&](const AccessorData& a, const char* key) {
-    if (a.count != n) throw Error(what(key) + ": has " + std::to_string(a.count) + " elements, POSITION has " + std::to_string(n));
-  };
-  for (size_t i = 0; i < n; ++i) {
-    const glm::dvec3 p = at3(positions, i);
-    if (!all_finite(p)) throw Error(what("POSITION") + ": vertex " + std::to_string(i) + " is not finite");
-    mesh.positions.push_back(p);
+
+  mesh.normals = read_attribute<3>(model, primitive, "NORMAL", name, n);
+  for (size_t i = 0; i < mesh.normals.size(); ++i) {
+    if (!(glm::length(mesh.normals[i]) > 1e-30))
+      throw Error(name + " NORMAL: normal " + std::to_string(i) + " is zero");
+    mesh.normals[i] = glm::normalize(mesh.normals[i]);
   }
-  if (attribute("NORMAL") >= 0) {
-    const AccessorData normals = read_accessor(model, attribute("NORMAL"), TINYGLTF_TYPE_VEC3, false, what("NORMAL"));
-    check_count(normals, "NORMAL");
-    for (size_t i = 0; i < n; ++i) {
-      const glm::dvec3 v = at3(normals, i);
-      if (!all_finite(v) || !(glm::length(v) > 1e-30)) {
-        throw Error(what("NORMAL") + ": normal " + std::to_string(i) + " is zero or not finite");
-      }
-      mesh.normals.push_back(glm::normalize(v));
-    }
-  }
-  if (attribute("TEXCOORD_0") >= 0) {
-    const AccessorData uvs = read_accessor(model, attribute("TEXCOORD_0"), TINYGLTF_TYPE_VEC2, false, what("TEXCOORD_0"));
-    check_count(uvs, "TEXCOORD_0");
-    for (size_t i = 0; i < n; ++i) {
-      const glm::dvec2 uv(uvs.values[2 * i], uvs.values[2 * i + 1]);
-      if (!all_finite(uv)) throw Error(what("TEXCOORD_0") + ": uv " + std::to_string(i) + " is not finite");
-      mesh.uvs.push_back(uv);
-    }
-  }
+  mesh.uvs = read_attribute<2>(model, primitive, "TEXCOORD_0", name, n);
   // glTF 2.0 §3.7.2.1: without normals, supplied tangents must be ignored.
-  if (attribute("TANGENT") >= 0 && !mesh.normals.empty()) {
-    const AccessorData tangents = read_accessor(model, attribute("TANGENT"), TINYGLTF_TYPE_VEC4, false, what("TANGENT"));
-    check_count(tangents, "TANGENT");
-    for (size_t i = 0; i < n; ++i) {
-      const glm::dvec4 t(tangents.values[4 * i], tangents.values[4 * i + 1], tangents.values[4 * i + 2], tangents.values[4 * i + 3]);
-      if (!all_finite(t) || !(glm::length(glm::dvec3(t)) > 1e-30) || t.w == 0.0) {
-        throw Error(what("TANGENT") + ": tangent " + std::to_string(i) + " is zero, has w = 0 or is not finite");
-      }
-      mesh.tangents.emplace_back(glm::normalize(glm::dvec3(t)), t.w > 0.0 ? 1.0 : -1.0);
+  if (!mesh.normals.empty()) mesh.tangents = read_attribute<4>(model, primitive, "TANGENT", name, n);
+  for (size_t i = 0; i < mesh.tangents.size(); ++i) {
+    const glm::dvec4 t = mesh.tangents[i];
+    if (!(glm::length(glm::dvec3(t)) > 1e-30) || t.w == 0.0) {
+      throw Error(name + " TANGENT: tangent " + std::to_string(i) + " is zero or has w = 0");
     }
+    mesh.tangents[i] = glm::dvec4(glm::normalize(glm::dvec3(t)), t.w > 0.0 ? 1.0 : -1.0);
   }
 
-  if (primitive.indices >= 0) {
-    const AccessorData indices = read_accessor(model, primitive.indices, TINYGLTF_TYPE_SCALAR, true, name + " indices");
-    mesh.indices.reserve(indices.count);
-    for (size_t i = 0; i < indices.count; ++i) {
-      const double index = indices.values[i];
-      if (index < 0.0 || index >= static_cast<double>(n)) {
-        throw Error(name + " indices: index " + std::to_string(i) + " = " + std::to_string(static_cast<long long>(index)) +
-                    " is outside [0, " + std::to_string(n) + ")");
-      }
-      mesh.indices.push_back(static_cast<uint32_t>(index));
-    }
-  } else {
-    for (size_t i = 0; i < n; ++i) mesh.indices.push_back(static_cast<uint32_t>(i));
-  }
+  mesh.indices = read_indices(model, primitive, name, n);
   if (mesh.indices.size() % 3 != 0) {
     throw Error(name + ": " + std::to_string(mesh.indices.size()) + " indices is not a whole number of triangles");
   }
@@ -204,7 +247,8 @@ std::vector<Mesh> load_gltf_meshes(const std::filesystem::path& file, const glm:
       }
       const size_t node_index = static_cast<size_t>(index);
       // glTF 2.0 §3.5.3: the hierarchy is a set of disjoint trees.
-      if (visited[node_index]) throw Error("node " + std::to_string(index) + " is reached twice (cycle or shared child)");
+      if (visited[node_index])
+        throw Error("node " + std::to_string(index) + " is reached twice (cycle or shared child)");
       visited[node_index] = true;
       const tinygltf::Node& node = model.nodes[node_index];
       const glm::dmat4 world = parent * local_transform(node, node_index);

@@ -10,9 +10,7 @@ namespace {
 
 constexpr size_t kMaxDescribedLength = 60;
 
-bool is_finite_number(const nlohmann::json& v) {
-  return v.is_number() && std::isfinite(v.get<double>());
-}
+bool is_finite_number(const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
 
 }  // namespace
 
@@ -26,14 +24,12 @@ std::string describe_json(const nlohmann::json& value) {
 JsonObjectReader::JsonObjectReader(const nlohmann::json& object, std::string file, std::string path)
     : object_(object), file_(std::move(file)), path_(std::move(path)) {
   if (!object_.is_object()) {
-    throw Error(file_ + ": " + (path_.empty() ? std::string("the top level") : path_) +
-                " must be a JSON object, got " + describe_json(object_));
+    throw Error(file_ + ": " + (path_.empty() ? std::string("the top level") : path_) + " must be a JSON object, got " +
+                describe_json(object_));
   }
 }
 
-std::string JsonObjectReader::key_path(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
-}
+std::string JsonObjectReader::key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
 void JsonObjectReader::fail(const std::string& key, const std::string& what) const {
   const auto it = object_.find(key);
@@ -76,8 +72,7 @@ double JsonObjectReader::positive_number(const std::string& key, std::optional<d
 int JsonObjectReader::integer_in(const std::string& key, int lo, int hi, std::optional<int> fallback) {
   const nlohmann::json* v = fallback ? optional(key) : required(key);
   if (v == nullptr) return *fallback;
-  const std::string what =
-      "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  const std::string what = "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   if (!is_finite_number(*v)) fail(key, what);
   const double x = v->get<double>();
   if (std::floor(x) != x || x < lo || x > hi) fail(key, what);
@@ -94,8 +89,8 @@ std::string JsonObjectReader::string(const std::string& key, std::optional<std::
 glm::dvec3 JsonObjectReader::vec3(const std::string& key, std::optional<glm::dvec3> fallback) {
   const nlohmann::json* v = fallback ? optional(key) : required(key);
   if (v == nullptr) return *fallback;
-  if (!v->is_array() || v->size() != 3 || !is_finite_number((*v)[0]) ||
-      !is_finite_number((*v)[1]) || !is_finite_number((*v)[2])) {
+  if (!v->is_array() || v->size() != 3 || !is_finite_number((*v)[0]) || !is_finite_number((*v)[1]) ||
+      !is_finite_number((*v)[2])) {
     fail(key, "must be an array of 3 finite numbers");
   }
   return {(*v)[0].get<double>(), (*v)[1].get<double>(), (*v)[2].get<double>()};
@@ -113,8 +108,8 @@ glm::dvec3 JsonObjectReader::colour(const std::string& key, std::optional<glm::d
   const glm::dvec3 c = vec3(key, fallback);
   for (int i = 0; i < 3; ++i) {
     if (c[i] < 0.0 || (max && c[i] > *max)) {
-      fail(key, max ? "must have components in [0, " + describe_json(*max) + "]"
-                    : std::string("must have components >= 0"));
+      fail(key,
+           max ? "must have components in [0, " + describe_json(*max) + "]" : std::string("must have components >= 0"));
     }
   }
   return c;
@@ -125,9 +120,8 @@ void JsonObjectReader::finish() const {
     if (known_.count(key) != 0) continue;
     std::string known_list;
     for (const std::string& k : known_) known_list += (known_list.empty() ? "" : ", ") + k;
-    throw Error(file_ + ": unknown key \"" + key + "\" in " +
-                (path_.empty() ? std::string("the top level") : path_) + " (known keys: " +
-                known_list + ")");
+    throw Error(file_ + ": unknown key \"" + key + "\" in " + (path_.empty() ? std::string("the top level") : path_) +
+                " (known keys: " + known_list + ")");
   }
 }
 

@@ -70,8 +70,8 @@ uint32_t read_material_ref(JsonObjectReader& r, const MaterialIndex& materials) 
   if (it == materials.end()) {
     std::string known;
     for (const auto& [k, v] : materials) known += (known.empty() ? "" : ", ") + k;
-    r.fail("material", "must name a material in \"materials\" (defined: " +
-                           (known.empty() ? std::string("none") : known) + ")");
+    r.fail("material",
+           "must name a material in \"materials\" (defined: " + (known.empty() ? std::string("none") : known) + ")");
   }
   return it->second;
 }
@@ -95,8 +95,8 @@ glm::dmat4 read_transform(JsonObjectReader r) {
   return translate_rotate_scale(translate, rotate_deg, scale);
 }
 
-void read_object(JsonObjectReader r, const MaterialIndex& materials,
-                 const std::filesystem::path& base_dir, const std::string& path, Scene& scene) {
+void read_object(JsonObjectReader r, const MaterialIndex& materials, const std::filesystem::path& base_dir,
+                 const std::string& path, Scene& scene) {
   const std::string type = r.string("type");
   if (type == "plane") {
     Plane p;
@@ -116,10 +116,9 @@ void read_object(JsonObjectReader r, const MaterialIndex& materials,
     const std::string file = r.string("file");
     if (file.empty()) r.fail("file", "must be a non-empty path");
     const uint32_t material = read_material_ref(r, materials);
-    const glm::dmat4 transform = r.has("transform")
-                                     ? read_transform(JsonObjectReader(r.value("transform"), r.file(),
-                                                                       r.key_path("transform")))
-                                     : glm::dmat4(1.0);
+    const glm::dmat4 transform =
+        r.has("transform") ? read_transform(JsonObjectReader(r.value("transform"), r.file(), r.key_path("transform")))
+                           : glm::dmat4(1.0);
     r.finish();
     std::vector<Mesh> meshes;
     try {

@@ -1,13 +1,12 @@
-// Small helpers shared by the normal distributions (ndf_*.glsl): accurate log(1+x), exp(x)-1 and
-// log(1+x)-x near 0 (GLSL has no log1p/expm1), a local frame, and a hash stream for rejection
-// samplers that need more than the two uniforms they are given.
+// Small helpers shared by the normal distributions (ndf_*.glsl): log(1+x) - x without cancellation
+// near 0, and a hash stream for rejection samplers that need more than the two uniforms they get.
 #ifndef FACET_NDF_COMMON_GLSL
 #define FACET_NDF_COMMON_GLSL
 #include "lib/prelude.glsl"
 
 // log(1+x) - x. For |x| <= 1/2 with z = x/(2+x): log(1+x) = 2 atanh z = 2(z + z^3/3 + ...) and
 // x = 2z/(1-z), so log(1+x) - x = -2z^2/(1-z) + 2 sum_{k>=1} z^(2k+1)/(2k+1); no cancellation.
-real ndf_log1p_minus_x(real x) {
+inline real ndf_log1p_minus_x(real x) {
   if (abs(x) > real(0.5)) return log(real(1) + x) - x;
   real z = x / (real(2) + x);
   real z2 = z * z;
@@ -21,47 +20,22 @@ real ndf_log1p_minus_x(real x) {
   return real(-2) * z2 / (real(1) - z) + real(2) * z * sum;
 }
 
-real ndf_log1p(real x) { return ndf_log1p_minus_x(x) + x; }
-
-// exp(x) - 1 = 2 tanh(x/2) / (1 - tanh(x/2)), accurate near 0 because tanh is.
-real ndf_expm1(real x) {
-  if (abs(x) > real(0.5)) return exp(x) - real(1);
-  real t = tanh(real(0.5) * x);
-  return real(2) * t / (real(1) - t);
-}
-
-// An orthonormal frame (t, b, n) around the unit vector n, continuous except at n.z = -1 (Duff et al. 2017 idea).
-struct NdfFrame {
-  real3 t;
-  real3 b;
-  real3 n;
-};
-
-NdfFrame ndf_frame(real3 n) {
-  real s = n.z >= real(0) ? real(1) : real(-1);
-  real a = real(-1) / (s + n.z);
-  real c = n.x * n.y * a;
-  return NdfFrame(real3(real(1) + s * n.x * n.x * a, s * c, -s * n.x), real3(c, s + n.y * n.y * a, -n.y), n);
-}
-
-real3 ndf_to_world(NdfFrame f, real3 v) { return v.x * f.t + v.y * f.b + v.z * f.n; }
-
 // Hash stream (PCG-style output permutation of an LCG state) for rejection loops. The first
 // attempt of a sampler uses the caller's uniforms; later attempts draw from this stream.
 struct NdfRng {
   uint state;
 };
 
-NdfRng ndf_rng_seed(real2 u) {
+inline NdfRng ndf_rng_seed(real2 u) {
   uint a = uint(clamp(u.x, real(0), real(1)) * real(4294967040.0));
   uint b = uint(clamp(u.y, real(0), real(1)) * real(4294967040.0));
   return NdfRng(a * 747796405u + (b ^ 2891336453u));
 }
 
-NdfRng ndf_rng_next(NdfRng r) { return NdfRng(r.state * 747796405u + 2891336453u); }
+inline NdfRng ndf_rng_next(NdfRng r) { return NdfRng(r.state * 747796405u + 2891336453u); }
 
 // Uniform in [0, 1) from the current state (24 bits, exact in float and double).
-real ndf_rng_uniform(NdfRng r) {
+inline real ndf_rng_uniform(NdfRng r) {
   uint w = ((r.state >> ((r.state >> 28u) + 4u)) ^ r.state) * 277803737u;
   w = (w >> 22u) ^ w;
   return real(w >> 8u) * real(5.9604644775390625e-8);

@@ -6,7 +6,7 @@
 #include "lib/prelude.glsl"
 
 // D(m) = 1 / (pi ax ay (mx^2/ax^2 + my^2/ay^2 + mz^2)^2) on mz > 0 (eq. 24 with tan^2 = (1-u^2)/u^2).
-real ndf_ggx_D(real3 m, real2 alpha) {
+inline real ndf_ggx_D(real3 m, real2 alpha) {
   if (m.z <= real(0)) return real(0);
   real3 s = real3(m.x / alpha.x, m.y / alpha.y, m.z);
   real q = dot(s, s);
@@ -14,20 +14,20 @@ real ndf_ggx_D(real3 m, real2 alpha) {
 }
 
 // alpha_w^2 sin^2(theta_w): the squared roughness seen along w, times the squared sine.
-real ndf_ggx_projected_a2(real3 w, real2 alpha) {
+inline real ndf_ggx_projected_a2(real3 w, real2 alpha) {
   return alpha.x * alpha.x * w.x * w.x + alpha.y * alpha.y * w.y * w.y;
 }
 
 // sigma(w) = (w_z + sqrt(w_z^2 + a2)) / 2 (eq. 25); for w_z < 0 the equal form a2 / (2 (r - w_z))
 // avoids the cancellation of r + w_z.
-real ndf_ggx_sigma(real3 w, real2 alpha) {
+inline real ndf_ggx_sigma(real3 w, real2 alpha) {
   real a2 = ndf_ggx_projected_a2(w, alpha);
   real r = sqrt(w.z * w.z + a2);
   return w.z >= real(0) ? real(0.5) * (w.z + r) : (r > real(0) ? real(0.5) * a2 / (r - w.z) : real(0));
 }
 
 // Smith Lambda(w) = sigma(w)/w_z - 1 = p / (2 (1 + sqrt(1 + p))), p = a2 / w_z^2, for w_z > 0.
-real ndf_ggx_lambda(real3 w, real2 alpha) {
+inline real ndf_ggx_lambda(real3 w, real2 alpha) {
   real p = ndf_ggx_projected_a2(w, alpha) / (w.z * w.z);
   return p / (real(2) * (real(1) + sqrt(real(1) + p)));
 }
@@ -36,7 +36,7 @@ real ndf_ggx_lambda(real3 w, real2 alpha) {
 // by 1/alpha the surface is a unit hemisphere; m' = normalize(c + v) with c uniform on the sphere
 // has density proportional to max(0, m'.v), and m'_z > 0 exactly when c_z > -v_z, so c is drawn
 // uniformly on that spherical cap (the idea of Dupuy & Benyoub 2023). Returns +z when sigma(wi) = 0.
-real3 ndf_ggx_sample_visible(real3 wi, real2 alpha, real2 u) {
+inline real3 ndf_ggx_sample_visible(real3 wi, real2 alpha, real2 u) {
   real3 v = normalize(real3(alpha.x * wi.x, alpha.y * wi.y, wi.z));
   real phi = real(2) * FACET_PI * u.x;
   real z = (real(1) - u.y) * (real(1) + v.z) - v.z;

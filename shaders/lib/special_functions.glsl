@@ -149,20 +149,33 @@ inline real sf_log1p(real x) {
   return log(real(1) + x);
 }
 
-// Standard normal density phi(t) and distribution Phi(t).
+// exp(-t^2/2) with t^2 split exactly as above (t/sqrt2 would add a rounding amplified by t^2).
+inline real sf_exp_neg_half_square(real t) {
+  real at = min(abs(t), real(1e5));
+  real t2 = at * at;
+  real err = fma(at, at, -t2);
+  return exp(real(-0.5) * t2) * (real(1) - real(0.5) * err);
+}
+
+// Standard normal density phi(t), upper tail Q(t) = 1 - Phi(t) and distribution Phi(t).
 inline real sf_normal_pdf(real t) {
-  return FACET_INV_SQRT2PI * sf_exp_neg_square(t * SF_INV_SQRT2);
+  return FACET_INV_SQRT2PI * sf_exp_neg_half_square(t);
+}
+
+inline real sf_normal_tail(real t) {
+  real tail = real(0.5) * sf_erfcx_nonneg(abs(t) * SF_INV_SQRT2) * sf_exp_neg_half_square(t);
+  return t >= real(0) ? tail : real(1) - tail;
 }
 
 inline real sf_normal_cdf(real t) {
-  return real(0.5) * sf_erfc(-t * SF_INV_SQRT2);
+  return sf_normal_tail(-t);
 }
 
 // log Phi(t), finite for every finite t: for t < 0, Phi(t) = erfcx(-t/sqrt2)/2 exp(-t^2/2) is taken
 // in log form (Phi underflows below t = -38 in double, -13 in float); for t >= 0, log1p(-Q(t)).
 inline real sf_log_normal_cdf(real t) {
   if (t < real(0)) return log(real(0.5) * sf_erfcx_nonneg(-t * SF_INV_SQRT2)) - real(0.5) * t * t;
-  return sf_log1p(real(-0.5) * sf_erfc(t * SF_INV_SQRT2));
+  return sf_log1p(-sf_normal_tail(t));
 }
 
 // phi(t)/Phi(t) (inverse Mills ratio), never a quotient of two underflowing numbers: for t < 0 it is

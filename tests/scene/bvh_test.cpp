@@ -66,8 +66,8 @@ size_t check_bvh(const Bvh& bvh, const std::vector<Mesh>& meshes) {
       }
       for (int v = 0; v < 3; ++v) {
         const glm::dvec3 p = meshes[r.mesh].positions[meshes[r.mesh].indices[3 * r.triangle + static_cast<size_t>(v)]];
-        EXPECT_TRUE(contains(n, p)) << "leaf " << i;                               // the double vertex
-        EXPECT_TRUE(contains(n, glm::dvec3(glm::vec3(p)))) << "leaf " << i;        // and its float rounding
+        EXPECT_TRUE(contains(n, p)) << "leaf " << i;                         // the double vertex
+        EXPECT_TRUE(contains(n, glm::dvec3(glm::vec3(p)))) << "leaf " << i;  // and its float rounding
       }
     }
   }

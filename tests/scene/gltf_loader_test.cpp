@@ -41,7 +41,8 @@ GltfTestWriter quad_writer(const Quad& q = {}) {
                      {"TEXCOORD_0", w.add_accessor(q.uvs, kFloat, "VEC2", 4)},
                      {"TANGENT", w.add_accessor(q.tangents, kFloat, "VEC4", 4)}};
   const int indices = w.add_accessor(q.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, "SCALAR", q.indices.size());
-  w.doc()["meshes"] = Json::array({{{"name", "quad"}, {"primitives", Json::array({{{"attributes", attributes}, {"indices", indices}}})}}});
+  w.doc()["meshes"] = Json::array(
+      {{{"name", "quad"}, {"primitives", Json::array({{{"attributes", attributes}, {"indices", indices}}})}}});
   w.doc()["nodes"] = Json::array({{{"mesh", 0}}});
   w.doc()["scenes"] = Json::array({{{"nodes", Json::array({0})}}});
   w.doc()["scene"] = 0;
@@ -97,6 +98,23 @@ TEST(GltfLoader, GlbGivesTheSameMeshAsGltf) {
   EXPECT_EQ(glb[0].tangents, gltf[0].tangents);
 }
 
+TEST(GltfLoader, ExternalBufferRelativeToTheGltfFile) {
+  GltfTestWriter w = quad_writer();
+  const auto dir = test::scratch_dir("external");
+  std::filesystem::create_directories(dir / "sub");
+  w.write_gltf_external(dir / "sub/mesh.gltf", "quad.bin");
+  const std::vector<Mesh> external = load_gltf_meshes(dir / "sub/mesh.gltf", glm::dmat4(1.0), 0);
+  ASSERT_EQ(external.size(), 1u);
+  EXPECT_EQ(external[0].positions, load(w, "external_embedded")[0].positions);
+  std::filesystem::remove(dir / "sub/quad.bin");
+  try {
+    load_gltf_meshes(dir / "sub/mesh.gltf", glm::dmat4(1.0), 0);
+    ADD_FAILURE() << "loaded without its buffer";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("invalid glTF"), std::string::npos) << e.what();
+  }
+}
+
 TEST(GltfLoader, EveryIndexComponentTypeAndNoIndices) {
   const std::vector<uint32_t> expected{0, 1, 2, 0, 2, 3};
   {
@@ -110,6 +128,13 @@ TEST(GltfLoader, EveryIndexComponentTypeAndNoIndices) {
     w.doc()["meshes"][0]["primitives"][0]["indices"] =
         w.add_accessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, "SCALAR", 6);
     EXPECT_EQ(load(w, "u16")[0].indices, expected);
+  }
+  {
+    // glTF allows only unsigned index types; signed ones are read too when non-negative.
+    GltfTestWriter w = quad_writer();
+    w.doc()["meshes"][0]["primitives"][0]["indices"] =
+        w.add_accessor(std::vector<int16_t>{0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_SHORT, "SCALAR", 6);
+    EXPECT_EQ(load(w, "i16")[0].indices, expected);
   }
   {
     // No indices: consecutive vertex triples form the triangles (two here, six vertices).
@@ -151,10 +176,11 @@ TEST(GltfLoader, TangentsWithoutNormalsAreIgnored) {
 TEST(GltfLoader, NodeHierarchyAndObjectTransform) {
   GltfTestWriter w = quad_writer();
   const double half = glm::radians(60.0) / 2;  // 60 degrees about the axis (0, 0.6, 0.8)
-  w.doc()["nodes"] = Json::array(
-      {{{"translation", {1, 2, 3}}, {"rotation", {0, 0.6 * std::sin(half), 0.8 * std::sin(half), std::cos(half)}},
-        {"scale", {2, 0.5, 3}}, {"children", {1}}},
-       {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0.5, 0.25, 1}}, {"mesh", 0}}});
+  w.doc()["nodes"] = Json::array({{{"translation", {1, 2, 3}},
+                                   {"rotation", {0, 0.6 * std::sin(half), 0.8 * std::sin(half), std::cos(half)}},
+                                   {"scale", {2, 0.5, 3}},
+                                   {"children", {1}}},
+                                  {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0.5, 0.25, 1}}, {"mesh", 0}}});
   const glm::dmat4 object = translate_rotate_scale({0, -1, 0}, {0, 90, 0}, glm::dvec3(1.5));
   const glm::dmat4 parent = glm::scale(
       glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(1, 2, 3)), glm::radians(60.0), glm::dvec3(0, 0.6, 0.8)),
@@ -209,7 +235,8 @@ TEST(GltfLoader, TransformBeyondTheFloatRangeIsAnError) {
     load_gltf_meshes(file, huge, 0);
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), file.string() + ": mesh quad primitive 0: a position is not finite in float precision");
+    EXPECT_EQ(std::string(e.what()),
+              file.string() + ": mesh quad primitive 0: a position is not finite in float precision");
   }
 }
 
@@ -244,10 +271,16 @@ TEST(GltfLoader, BrokenFilesGiveOneLineErrors) {
        "quad primitive 0: mode 1 is not supported (only triangles, mode 4)"},
       {"index_out_of_range",
        [](GltfTestWriter& w) {
-         w.doc()["meshes"][0]["primitives"][0]["indices"] = w.add_accessor(
-             std::vector<uint16_t>{0, 1, 4}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, "SCALAR", 3);
+         w.doc()["meshes"][0]["primitives"][0]["indices"] =
+             w.add_accessor(std::vector<uint16_t>{0, 1, 4}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, "SCALAR", 3);
        },
        "quad primitive 0 indices: index 2 = 4 is outside [0, 4)"},
+      {"negative_index",
+       [](GltfTestWriter& w) {
+         w.doc()["meshes"][0]["primitives"][0]["indices"] =
+             w.add_accessor(std::vector<int8_t>{0, -1, 2}, TINYGLTF_COMPONENT_TYPE_BYTE, "SCALAR", 3);
+       },
+       "quad primitive 0 indices: index 1 = -1 is outside [0, 4)"},
       {"accessor_past_view", [](GltfTestWriter& w) { w.doc()["accessors"][0]["count"] = 5; },
        "quad primitive 0 POSITION: reaches outside its bufferView"},
       {"accessor_offset_past_view", [](GltfTestWriter& w) { w.doc()["accessors"][0]["byteOffset"] = 4; },
@@ -268,23 +301,24 @@ TEST(GltfLoader, BrokenFilesGiveOneLineErrors) {
        [nan](GltfTestWriter& w) {
          Quad q;
          q.positions[4] = nan;
-         w.doc()["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = w.add_accessor(q.positions, kFloat, "VEC3", 4);
+         w.doc()["meshes"][0]["primitives"][0]["attributes"]["POSITION"] =
+             w.add_accessor(q.positions, kFloat, "VEC3", 4);
        },
-       "POSITION: vertex 1 is not finite"},
+       "POSITION: element 1 is not finite"},
       {"zero_normal",
        [](GltfTestWriter& w) {
          Quad q;
          q.normals = std::vector<float>(12, 0.0f);
          w.doc()["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = w.add_accessor(q.normals, kFloat, "VEC3", 4);
        },
-       "NORMAL: normal 0 is zero or not finite"},
+       "NORMAL: normal 0 is zero"},
       {"tangent_w_zero",
        [](GltfTestWriter& w) {
          Quad q;
          q.tangents[3] = 0.0f;
          w.doc()["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = w.add_accessor(q.tangents, kFloat, "VEC4", 4);
        },
-       "tangent 0 is zero, has w = 0"},
+       "TANGENT: tangent 0 is zero or has w = 0"},
       {"count_mismatch",
        [](GltfTestWriter& w) {
          w.doc()["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] =
@@ -300,17 +334,19 @@ TEST(GltfLoader, BrokenFilesGiveOneLineErrors) {
        "indices: must hold integers"},
       {"not_triangles",
        [](GltfTestWriter& w) {
-         w.doc()["meshes"][0]["primitives"][0]["indices"] = w.add_accessor(
-             std::vector<uint16_t>{0, 1, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, "SCALAR", 4);
+         w.doc()["meshes"][0]["primitives"][0]["indices"] =
+             w.add_accessor(std::vector<uint16_t>{0, 1, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, "SCALAR", 4);
        },
        "4 indices is not a whole number of triangles"},
-      {"no_position",
-       [](GltfTestWriter& w) { w.doc()["meshes"][0]["primitives"][0]["attributes"].erase("POSITION"); },
+      {"no_position", [](GltfTestWriter& w) { w.doc()["meshes"][0]["primitives"][0]["attributes"].erase("POSITION"); },
        "has no POSITION attribute"},
       {"cycle", [](GltfTestWriter& w) { w.doc()["nodes"][0]["children"] = {0}; }, "node 0 is reached twice"},
       {"missing_mesh", [](GltfTestWriter& w) { w.doc()["nodes"][0]["mesh"] = 3; }, "missing mesh 3"},
       {"missing_node", [](GltfTestWriter& w) { w.doc()["scenes"][0]["nodes"] = {9}; }, "node 9 does not exist"},
-      {"singular_node", [](GltfTestWriter& w) { w.doc()["nodes"][0]["scale"] = {1, 0, 1}; },
+      {"singular_node",
+       [](GltfTestWriter& w) {
+         w.doc()["nodes"][0]["scale"] = {1, 0, 1};
+       },
        "node 0: transform is singular"},
       {"required_extension",
        [](GltfTestWriter& w) {
@@ -320,9 +356,8 @@ TEST(GltfLoader, BrokenFilesGiveOneLineErrors) {
        "requires unsupported glTF extensions: KHR_draco_mesh_compression"},
       {"sparse",
        [](GltfTestWriter& w) {
-         w.doc()["accessors"][0]["sparse"] = {{"count", 1},
-                                              {"indices", {{"bufferView", 4}, {"componentType", 5125}}},
-                                              {"values", {{"bufferView", 0}}}};
+         w.doc()["accessors"][0]["sparse"] = {
+             {"count", 1}, {"indices", {{"bufferView", 4}, {"componentType", 5125}}}, {"values", {{"bufferView", 0}}}};
        },
        "sparse accessors are not supported"},
   };
@@ -333,6 +368,25 @@ TEST(GltfLoader, BrokenFilesGiveOneLineErrors) {
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.name << ": got \"" << message << "\"";
     EXPECT_EQ(message.find('\n'), std::string::npos) << c.name;
     EXPECT_NE(message.find("mesh.gltf: "), std::string::npos) << c.name << ": the file is named";
+  }
+}
+
+// tinygltf walks `extras` recursively: a deeply nested document is refused before it gets there.
+TEST(GltfLoader, DeepNestingIsRefusedBeforeParsing) {
+  const auto dir = test::scratch_dir("deep");
+  GltfTestWriter w = quad_writer();
+  std::string text = w.gltf_text();
+  text.pop_back();  // the final '}'
+  text += ", \"extras\": " + std::string(200000, '[') + std::string(200000, ']') + "}";
+  std::ofstream(dir / "deep.gltf") << text;
+  w.write_glb(dir / "deep.glb", text);
+  for (const char* name : {"deep.gltf", "deep.glb"}) {
+    try {
+      load_gltf_meshes(dir / name, glm::dmat4(1.0), 0);
+      ADD_FAILURE() << name << " loaded";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), (dir / name).string() + ": invalid glTF: JSON nested deeper than 64 levels");
+    }
   }
 }
 

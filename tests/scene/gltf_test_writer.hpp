@@ -31,7 +31,9 @@ class GltfTestWriter {
     std::memcpy(bin_.data() + offset, values.data(), values.size() * sizeof(T));
     doc_["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
     nlohmann::json accessor = {{"bufferView", doc_["bufferViews"].size() - 1},
-                               {"componentType", component_type}, {"count", count}, {"type", type}};
+                               {"componentType", component_type},
+                               {"count", count},
+                               {"type", type}};
     if (normalized) accessor["normalized"] = true;
     doc_["accessors"].push_back(accessor);
     return static_cast<int>(doc_["accessors"].size() - 1);
@@ -39,14 +41,25 @@ class GltfTestWriter {
 
   nlohmann::json& doc() { return doc_; }
 
-  void write_gltf(const std::filesystem::path& file) {
-    finish_buffer("data:application/octet-stream;base64," + base64(bin_));
+  void write_gltf(const std::filesystem::path& file) { std::ofstream(file) << gltf_text(); }
+
+  // The buffer as a separate file `bin_name` beside `file`, referenced by a relative uri.
+  void write_gltf_external(const std::filesystem::path& file, const std::string& bin_name) {
+    finish_buffer(bin_name);
     std::ofstream(file) << doc_.dump();
+    std::ofstream(file.parent_path() / bin_name, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bin_.data()), static_cast<std::streamsize>(bin_.size()));
   }
 
-  void write_glb(const std::filesystem::path& file) {
+  std::string gltf_text() {
+    finish_buffer("data:application/octet-stream;base64," + base64(bin_));
+    return doc_.dump();
+  }
+
+  // `json_text` replaces the document's JSON (for inputs nlohmann could not even hold).
+  void write_glb(const std::filesystem::path& file, std::string json_text = "") {
     finish_buffer("");
-    std::string json = doc_.dump();
+    std::string json = json_text.empty() ? doc_.dump() : json_text;
     while (json.size() % 4 != 0) json.push_back(' ');
     std::vector<unsigned char> bin = bin_;
     while (bin.size() % 4 != 0) bin.push_back(0);
@@ -74,7 +87,8 @@ class GltfTestWriter {
     static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string out;
     for (size_t i = 0; i < data.size(); i += 3) {
-      const uint32_t b0 = data[i], b1 = i + 1 < data.size() ? data[i + 1] : 0, b2 = i + 2 < data.size() ? data[i + 2] : 0;
+      const uint32_t b0 = data[i], b1 = i + 1 < data.size() ? data[i + 1] : 0,
+                     b2 = i + 2 < data.size() ? data[i + 2] : 0;
       const uint32_t triple = (b0 << 16) | (b1 << 8) | b2;
       out += alphabet[(triple >> 18) & 63];
       out += alphabet[(triple >> 12) & 63];

@@ -24,8 +24,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct RefHit {
   double t;
   uint32_t mesh, triangle;
-  double b1, b2;          // barycentric weights of vertices 1 and 2
-  double edge_distance;   // distance of the hit point from the nearest edge (>= 0 inside)
+  double b1, b2;         // barycentric weights of vertices 1 and 2
+  double edge_distance;  // distance of the hit point from the nearest edge (>= 0 inside)
 };
 
 // The ray's intersection with the triangle's plane, inside or not: edge_distance < 0 outside.
@@ -163,7 +163,8 @@ TEST(RayCaster, MeshHitsMatchBruteForce) {
       // Embree decides in float (vertices rounded by ~1e-6 here): a differing answer is only
       // allowed for rays within 1e-5 of a triangle edge, or for near ties in t.
       const bool tie = ref && got && std::abs(got->t - ref->t) < 1e-5;
-      const bool edge = (ref && ref->edge_distance < 1e-5) || (got && near_an_edge_at(s.meshes, r.o, r.d, got->t, 1e-5));
+      const bool edge =
+          (ref && ref->edge_distance < 1e-5) || (got && near_an_edge_at(s.meshes, r.o, r.d, got->t, 1e-5));
       EXPECT_TRUE(tie || edge) << "t " << (ref ? ref->t : -1) << " vs " << (got ? got->t : -1);
       ++float_edge_cases;
       continue;
@@ -176,12 +177,14 @@ TEST(RayCaster, MeshHitsMatchBruteForce) {
     const double b0 = 1.0 - ref->b1 - ref->b2;
     const uint32_t* i = &m.indices[3 * ref->triangle];
     glm::dvec3 n = glm::normalize(b0 * m.normals[i[0]] + ref->b1 * m.normals[i[1]] + ref->b2 * m.normals[i[2]]);
-    const glm::dvec3 face = glm::normalize(glm::cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[0]]));
+    const glm::dvec3 face =
+        glm::normalize(glm::cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[0]]));
     const glm::dvec3 ng = glm::dot(face, r.d) > 0.0 ? -face : face;
     if (glm::dot(n, ng) < 0.0) n = -n;
-    worst_normal = std::max({worst_normal, glm::length(got->shading_normal - n), glm::length(got->geometric_normal - ng)});
-    const glm::dvec2 uv = m.uvs.empty() ? glm::dvec2(ref->b1, ref->b2)
-                                        : b0 * m.uvs[i[0]] + ref->b1 * m.uvs[i[1]] + ref->b2 * m.uvs[i[2]];
+    worst_normal =
+        std::max({worst_normal, glm::length(got->shading_normal - n), glm::length(got->geometric_normal - ng)});
+    const glm::dvec2 uv =
+        m.uvs.empty() ? glm::dvec2(ref->b1, ref->b2) : b0 * m.uvs[i[0]] + ref->b1 * m.uvs[i[1]] + ref->b2 * m.uvs[i[2]];
     worst_uv = std::max(worst_uv, glm::length(got->uv - uv));
     EXPECT_NEAR(glm::length(got->position - (r.o + ref->t * r.d)), 0.0, 1e-9);
   }
@@ -208,8 +211,8 @@ TEST(RayCaster, SphereClosedForms) {
   EXPECT_EQ(h->geometric_normal, glm::dvec3(0, 0, -1));
   EXPECT_EQ(h->shading_normal, glm::dvec3(0, 0, -1));
   EXPECT_EQ(h->material, 3u);
-  EXPECT_DOUBLE_EQ(h->uv.y, 0.5);                     // equator
-  EXPECT_DOUBLE_EQ(std::abs(h->uv.x - 0.5), 0.5);     // longitude of -z: the seam
+  EXPECT_DOUBLE_EQ(h->uv.y, 0.5);                  // equator
+  EXPECT_DOUBLE_EQ(std::abs(h->uv.x - 0.5), 0.5);  // longitude of -z: the seam
   // From the centre: t = r, the normal turned inward, toward the ray's origin.
   h = caster.intersect({0, 0, 0}, {1, 0, 0});
   ASSERT_TRUE(h);
@@ -293,7 +296,7 @@ TEST(RayCaster, NearestAmongPlanesSpheresAndMeshes) {
   EXPECT_DOUBLE_EQ(caster.intersect({1, 0, 0}, {1, 0, 0})->t, 1.0);
   EXPECT_EQ(caster.intersect({1, 0, 0}, {0, -1, 0})->material, 1u);  // the floor
   const glm::dvec3 diag = glm::normalize(glm::dvec3(1, -1, 0));
-  EXPECT_EQ(caster.intersect({1.5, 0, 0}, diag)->material, 3u);      // wall at t = 0.5 sqrt 2 < floor
+  EXPECT_EQ(caster.intersect({1.5, 0, 0}, diag)->material, 3u);  // wall at t = 0.5 sqrt 2 < floor
   EXPECT_FALSE(caster.intersect({1.5, 0, 0}, diag, 0.5));
 }
 

@@ -87,7 +87,8 @@ TEST(SceneLoader, EmptyDocumentGivesTheDocumentedDefaults) {
   EXPECT_EQ(s.background, glm::dvec3(0.0));
   EXPECT_TRUE(s.materials.empty() && s.planes.empty() && s.spheres.empty() && s.meshes.empty());
   const Scene m = parse_scene(Json::parse(R"({"materials": {"b": {"type": "lambert", "albedo": [0, 0, 0]},
-                                                            "a": {"type": "lambert"}}})"), "");
+                                                            "a": {"type": "lambert"}}})"),
+                              "");
   EXPECT_EQ(m.material_names, (std::vector<std::string>{"a", "b"}));  // alphabetical, as documented
   EXPECT_EQ(std::get<LambertMaterial>(m.materials[0]).albedo, glm::dvec3(0.8));
   EXPECT_EQ(std::get<LambertMaterial>(m.materials[1]).albedo, glm::dvec3(0.0));
@@ -111,30 +112,44 @@ TEST(SceneLoader, EachInvalidValueIsNamed) {
       {"/camera/fov_y", 180, "scenes/x.json: camera.fov_y must be in (0, 180) degrees, got 180"},
       {"/camera/fov_y", 0, "scenes/x.json: camera.fov_y must be in (0, 180) degrees, got 0"},
       {"/camera/fov_y", inf, "scenes/x.json: camera.fov_y must be a finite number, got null"},
-      {"/camera/position", Json::array({0, 0, 0}), "scenes/x.json: camera.target must differ from camera.position, got [0,0,0]"},
-      {"/camera/up", Json::array({0, 2, 10}), "scenes/x.json: camera.up must not be parallel to the view direction, got [0,2,10]"},
+      {"/camera/position", Json::array({0, 0, 0}),
+       "scenes/x.json: camera.target must differ from camera.position, got [0,0,0]"},
+      {"/camera/up", Json::array({0, 2, 10}),
+       "scenes/x.json: camera.up must not be parallel to the view direction, got [0,2,10]"},
       {"/camera/up", Json::array({0, 0, 0}), "scenes/x.json: camera.up must be a non-zero vector, got [0,0,0]"},
       {"/camera/up", Json::array({0, 1}), "scenes/x.json: camera.up must be an array of 3 finite numbers, got [0,1]"},
-      {"/camera/position", Json::array({0, nan, 1}), "scenes/x.json: camera.position must be an array of 3 finite numbers, got [0,null,1]"},
-      {"/camera/lens", 50, "scenes/x.json: unknown key \"lens\" in camera (known keys: fov_y, height, position, target, up, width)"},
+      {"/camera/position", Json::array({0, nan, 1}),
+       "scenes/x.json: camera.position must be an array of 3 finite numbers, got [0,null,1]"},
+      {"/camera/lens", 50,
+       "scenes/x.json: unknown key \"lens\" in camera (known keys: fov_y, height, position, target, up, width)"},
       {"/camera", 3, "scenes/x.json: camera must be a JSON object, got 3"},
-      {"/light/direction", Json::array({0, 0, 0}), "scenes/x.json: light.direction must be a non-zero vector, got [0,0,0]"},
-      {"/light/irradiance", Json::array({1, -1, 1}), "scenes/x.json: light.irradiance must have components >= 0, got [1,-1,1]"},
-      {"/ambient", Json::array({0, 0, inf}), "scenes/x.json: ambient must be an array of 3 finite numbers, got [0,0,null]"},
-      {"/materials/grey/albedo", Json::array({0.5, 1.5, 0.5}), "scenes/x.json: materials.grey.albedo must have components in [0, 1.0], got [0.5,1.5,0.5]"},
+      {"/light/direction", Json::array({0, 0, 0}),
+       "scenes/x.json: light.direction must be a non-zero vector, got [0,0,0]"},
+      {"/light/irradiance", Json::array({1, -1, 1}),
+       "scenes/x.json: light.irradiance must have components >= 0, got [1,-1,1]"},
+      {"/ambient", Json::array({0, 0, inf}),
+       "scenes/x.json: ambient must be an array of 3 finite numbers, got [0,0,null]"},
+      {"/materials/grey/albedo", Json::array({0.5, 1.5, 0.5}),
+       "scenes/x.json: materials.grey.albedo must have components in [0, 1.0], got [0.5,1.5,0.5]"},
       {"/materials/grey/type", "glass", "scenes/x.json: materials.grey.type must be one of: lambert, got \"glass\""},
-      {"/materials/grey/colour", Json::array({1, 1, 1}), "scenes/x.json: unknown key \"colour\" in materials.grey (known keys: albedo, type)"},
+      {"/materials/grey/colour", Json::array({1, 1, 1}),
+       "scenes/x.json: unknown key \"colour\" in materials.grey (known keys: albedo, type)"},
       {"/materials", Json::array(), "scenes/x.json: materials must be an object mapping names to materials, got []"},
       {"/objects/1/radius", 0, "scenes/x.json: objects[1].radius must be a positive number, got 0"},
       {"/objects/1/radius", -2, "scenes/x.json: objects[1].radius must be a positive number, got -2"},
-      {"/objects/1/raduis", 2, "scenes/x.json: unknown key \"raduis\" in objects[1] (known keys: center, material, radius, type)"},
-      {"/objects/1/material", "gray", "scenes/x.json: objects[1].material must name a material in \"materials\" (defined: grey), got \"gray\""},
-      {"/objects/0/normal", Json::array({0, 0, 0}), "scenes/x.json: objects[0].normal must be a non-zero vector, got [0,0,0]"},
+      {"/objects/1/raduis", 2,
+       "scenes/x.json: unknown key \"raduis\" in objects[1] (known keys: center, material, radius, type)"},
+      {"/objects/1/material", "gray",
+       "scenes/x.json: objects[1].material must name a material in \"materials\" (defined: grey), got \"gray\""},
+      {"/objects/0/normal", Json::array({0, 0, 0}),
+       "scenes/x.json: objects[0].normal must be a non-zero vector, got [0,0,0]"},
       {"/objects/0/type", "cube", "scenes/x.json: objects[0].type must be one of: plane, sphere, mesh, got \"cube\""},
       {"/objects/1/center", nullptr, "scenes/x.json: objects[1].center must be an array of 3 finite numbers, got null"},
       {"/objects/0", "plane", "scenes/x.json: objects[0] must be a JSON object, got \"plane\""},
       {"/objects", Json::object(), "scenes/x.json: objects must be an array, got {}"},
-      {"/lights", Json::array(), "scenes/x.json: unknown key \"lights\" in the top level (known keys: ambient, background, camera, light, materials, objects)"},
+      {"/lights", Json::array(),
+       "scenes/x.json: unknown key \"lights\" in the top level (known keys: ambient, background, camera, light, "
+       "materials, objects)"},
   };
   for (const InvalidCase& c : cases) {
     Json doc = example();
@@ -158,7 +173,8 @@ TEST(SceneLoader, MeshObjectTransformAndRelativePath) {
 
   Json bad_transform = Json::parse(R"({"materials": {"m": {"type": "lambert"}},
       "objects": [{"type": "mesh", "file": "meshes/triangle.gltf", "material": "m", "transform": {"scale": [1, 0, 1]}}]})");
-  EXPECT_EQ(parse_error(bad_transform), "scenes/x.json: objects[0].transform.scale must have non-zero components, got [1,0,1]");
+  EXPECT_EQ(parse_error(bad_transform),
+            "scenes/x.json: objects[0].transform.scale must have non-zero components, got [1,0,1]");
   bad_transform["objects"][0]["transform"] = {{"rotate", {0, 1, 0}}};
   EXPECT_EQ(parse_error(bad_transform),
             "scenes/x.json: unknown key \"rotate\" in objects[0].transform (known keys: rotate_deg, scale, translate)");
@@ -180,11 +196,13 @@ TEST(SceneLoader, FileLevelErrors) {
   // Line 3 is `  "ambient": [0.1, 0.1 0.1]`: the unexpected number spans columns 24-26 and the
   // position reported is the last character read.
   EXPECT_EQ(load_error(kData / "syntax_error.json"),
-            dir + "/syntax_error.json: invalid JSON at line 3, column 26: syntax error while parsing array - "
-                  "unexpected number literal; expected ']'");
+            dir +
+                "/syntax_error.json: invalid JSON at line 3, column 26: syntax error while parsing array - "
+                "unexpected number literal; expected ']'");
   EXPECT_EQ(load_error(kData / "absent.json"), dir + "/absent.json: cannot open for reading");
   EXPECT_EQ(load_error(kData), dir + ": cannot open for reading");
-  EXPECT_EQ(load_error(kData / "duplicate_key.json"), dir + "/duplicate_key.json: invalid JSON: duplicate key \"width\"");
+  EXPECT_EQ(load_error(kData / "duplicate_key.json"),
+            dir + "/duplicate_key.json: invalid JSON: duplicate key \"width\"");
   EXPECT_EQ(load_error(kData / "deep_nesting.json"),
             dir + "/deep_nesting.json: invalid JSON: nesting deeper than 64 levels");
   EXPECT_EQ(load_error(kData / "huge_number.json"),
@@ -237,10 +255,18 @@ TEST(SceneLoader, MutatedFilesNeverCrash) {
     for (int e = 0; e < edits; ++e) {
       const size_t at = rng() % text.size();
       switch (rng() % 4) {
-        case 0: text[at] = alphabet[rng() % alphabet.size()]; break;
-        case 1: text.erase(at, 1 + rng() % 8); break;
-        case 2: text.insert(at, 1, alphabet[rng() % alphabet.size()]); break;
-        default: text.resize(at); break;
+        case 0:
+          text[at] = alphabet[rng() % alphabet.size()];
+          break;
+        case 1:
+          text.erase(at, 1 + rng() % 8);
+          break;
+        case 2:
+          text.insert(at, 1, alphabet[rng() % alphabet.size()]);
+          break;
+        default:
+          text.resize(at);
+          break;
       }
       if (text.empty()) text.push_back('x');
     }
