@@ -5,6 +5,7 @@
 #include <random>
 #include <vector>
 
+#include "eval_cross_section.spv.h"
 #include "eval_visible_slope.spv.h"
 #include "gpu/batch_eval.hpp"
 #include "vk/context.hpp"
@@ -42,5 +43,29 @@ void BM_GpuVisibleSlope(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 BENCHMARK(BM_GpuVisibleSlope)->Arg(1 << 22)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+// The fast cross-section of one distribution (range(1) = ndf id) at random (param, u).
+void BM_GpuCrossSection(benchmark::State& state) {
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  const int ndf = static_cast<int>(state.range(1));
+  std::vector<EvalRecord> inputs(static_cast<size_t>(state.range(0)));
+  for (auto& r : inputs) {
+    float param = ndf == 2 ? uni(rng) * 0.999f : std::pow(10.0f, -3.0f + 6.0f * uni(rng));
+    r = {glm::vec4(ndf, param, 2 * uni(rng) - 1, 0), glm::vec4(0)};
+  }
+  facet::gpu::run_batch_eval(context(), "eval_cross_section", eval_cross_section_spv, inputs);  // JIT warm-up
+  for (auto _ : state) {
+    facet::gpu::BatchTiming timing;
+    facet::gpu::run_batch_eval(context(), "eval_cross_section", eval_cross_section_spv, inputs, &timing);
+    state.SetIterationTime(timing.gpu_ms * 1e-3);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_GpuCrossSection)
+    ->ArgsProduct({{1 << 22}, {0, 1, 2, 3}})
+    ->ArgNames({"n", "ndf"})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

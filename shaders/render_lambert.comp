@@ -16,7 +16,7 @@ layout(std430, binding = 2) readonly buffer Spheres { GpuSphere spheres[]; };
 layout(std430, binding = 3) readonly buffer Nodes { GpuBvhNode nodes[]; };
 layout(std430, binding = 4) readonly buffer Triangles { GpuTriangle triangles[]; };
 layout(std430, binding = 5) readonly buffer Materials { GpuMaterial materials[]; };
-layout(std430, binding = 6) writeonly buffer Pixels { vec4 pixels[]; };
+layout(std430, binding = 6) writeonly buffer Pixels { vec4 pixels[]; };  // this tile's pixels, row-major
 layout(push_constant) uniform Push { GpuTile tile; };
 
 const float kInfinity = 1e30;
@@ -90,5 +90,5 @@ void main() {
     color = lambert_radiance(materials[hit.material].albedo.rgb, n, l,
                              globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
   }
-  pixels[pixel.y * globals.image.x + pixel.x] = vec4(color, 1.0);
+  pixels[gl_GlobalInvocationID.y * tile.rect.z + gl_GlobalInvocationID.x] = vec4(color, 1.0);
 }

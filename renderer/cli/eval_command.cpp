@@ -27,6 +27,7 @@ void add_eval_command(CLI::App& app, Action& action) {
   auto* eval = app.add_subcommand("eval", "Evaluate a math kernel on JSON lines (stdin -> stdout)");
   eval->require_subcommand(1);
   add_eval_visible_slope(*eval, action);
+  add_eval_cross_section(*eval, action);
 }
 
 }  // namespace facet::cli

@@ -150,21 +150,21 @@ HeightField::Cell HeightField::cell(int i, int j) const {
   return {at(i, j), at(i1, j), at(i, j1), at(i1, j1)};
 }
 
-double HeightField::height_at(double x, double y) const {
-  double fx = positive_modulo(x, width_ * texel_size_) / texel_size_,
-         fy = positive_modulo(y, height_ * texel_size_) / texel_size_;
+HeightField::CellPoint HeightField::locate(double x, double y) const {
+  double fx = positive_modulo(x, width_ * texel_size_) / texel_size_;
+  double fy = positive_modulo(y, height_ * texel_size_) / texel_size_;
   int i = std::min(static_cast<int>(fx), width_ - 1), j = std::min(static_cast<int>(fy), height_ - 1);
-  Cell c = cell(i, j);
-  return bilinear(c.z00, c.z10, c.z01, c.z11, fx - i, fy - j);
+  return {cell(i, j), fx - i, fy - j};
+}
+
+double HeightField::height_at(double x, double y) const {
+  CellPoint p = locate(x, y);
+  return bilinear(p.c.z00, p.c.z10, p.c.z01, p.c.z11, p.u, p.v);
 }
 
 glm::dvec2 HeightField::slope_at(double x, double y) const {
-  double fx = positive_modulo(x, width_ * texel_size_) / texel_size_,
-         fy = positive_modulo(y, height_ * texel_size_) / texel_size_;
-  int i = std::min(static_cast<int>(fx), width_ - 1), j = std::min(static_cast<int>(fy), height_ - 1);
-  Cell c = cell(i, j);
-  double u = fx - i, v = fy - j;
-  // ∂(H1)/∂x = ((1−v)(z10 − z00) + v(z11 − z01))/Δ, ∂(H1)/∂y = ((1−u)(z01 − z00) + u(z11 − z10))/Δ.   (H2)
+  auto [c, u, v] = locate(x, y);
+  // ∂z/∂x = ((1−v)(z10 − z00) + v(z11 − z01))/Δ, ∂z/∂y = ((1−u)(z01 − z00) + u(z11 − z10))/Δ   (H2)
   return {((1.0 - v) * (c.z10 - c.z00) + v * (c.z11 - c.z01)) / texel_size_,
           ((1.0 - u) * (c.z01 - c.z00) + u * (c.z11 - c.z10)) / texel_size_};
 }
@@ -340,6 +340,13 @@ double HeightField::search(const LocalRay& r, bool any_hit) const {
         int k = n_children++;
         for (; k > 0 && children[k - 1].t_enter < child.t_enter; --k) children[k] = children[k - 1];
         children[k] = child;
+        // Start loading what the child's own expansion reads: incoherent rays miss the cache there.
+        if (child.level > 0 && child.level <= top) {
+          const Level& below = mip_[static_cast<std::size_t>(child.level - 1)];
+          __builtin_prefetch(&below.bounds[below.index(2 * child.i, 2 * child.j)]);
+        } else if (child.level == 0) {
+          __builtin_prefetch(&z_[static_cast<std::size_t>(child.j) * width_ + child.i]);
+        }
       }
     // The farthest is pushed first, so the nearest is popped next.
     for (int k = 0; k < n_children; ++k) stack[stack_size++] = children[k];

@@ -74,8 +74,12 @@ class HeightField {
   struct Cell {
     double z00, z10, z01, z11;
   };
-
+  struct CellPoint {
+    Cell c;
+    double u, v;
+  };
   Cell cell(int i, int j) const;
+  CellPoint locate(double x, double y) const;  // the cell of patch point (x, y) and (u, v) in it
   std::optional<LocalRay> local_ray(glm::dvec3 o, glm::dvec3 d, double t_max) const;
   double search(const LocalRay& ray, bool any_hit) const;
   double cell_hit(const LocalRay& ray, int tile_x, int tile_y, int i, int j, double t_lo, double t_hi) const;

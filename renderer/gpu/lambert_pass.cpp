@@ -23,8 +23,8 @@ Image render_lambert(vk::Context& context, const Scene& scene, int width, int he
                      RenderStats* stats, const TileProgress& progress, int tile_size) {
   if (width <= 0 || height <= 0) throw Error("image size must be positive");
   SceneBuffers buffers = upload_scene(context, scene, width, height);
-  const uint64_t pixel_bytes = sizeof(vec4) * static_cast<uint64_t>(width) * height;
-  vk::Buffer pixels(context, pixel_bytes);
+  // One tile's pixels at a time: frames of any size stay within the storage-buffer range.
+  vk::Buffer pixels(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size);
   vk::Kernel kernel(context, {.name = "render_lambert",
                               .spirv = render_lambert_spv,
                               .buffer_count = 7,
@@ -33,25 +33,23 @@ Image render_lambert(vk::Context& context, const Scene& scene, int width, int he
   const std::array<const vk::Buffer*, 7> bindings = {&buffers.globals, &buffers.planes,
                                                      &buffers.spheres, &buffers.nodes,
                                                      &buffers.triangles, &buffers.materials, &pixels};
-  const int tiles_x = (width + tile_size - 1) / tile_size;
-  const int tiles_y = (height + tile_size - 1) / tile_size;
+  Image image(width, height);
+  std::vector<vec4> tile_rgba(static_cast<size_t>(tile_size) * tile_size);
   RenderStats local;
-  for (int ty = 0; ty < tiles_y; ++ty)
-    for (int tx = 0; tx < tiles_x; ++tx) {
-      GpuTile tile{uvec4(tx * tile_size, ty * tile_size, std::min(tile_size, width - tx * tile_size),
-                         std::min(tile_size, height - ty * tile_size))};
-      glm::uvec3 groups((tile.rect.z + kWorkgroup - 1) / kWorkgroup,
-                        (tile.rect.w + kWorkgroup - 1) / kWorkgroup, 1);
+  const int tiles = tile_count(width, height, tile_size);
+  for (int y0 = 0; y0 < height; y0 += tile_size)
+    for (int x0 = 0; x0 < width; x0 += tile_size) {
+      const int w = std::min(tile_size, width - x0), h = std::min(tile_size, height - y0);
+      GpuTile tile{uvec4(x0, y0, w, h)};
+      glm::uvec3 groups((w + kWorkgroup - 1) / kWorkgroup, (h + kWorkgroup - 1) / kWorkgroup, 1);
       local.gpu_ms += kernel.dispatch(bindings, &tile, groups);
+      pixels.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) image.set(x0 + x, y0 + y, glm::vec3(tile_rgba[static_cast<size_t>(y) * w + x]));
       ++local.tiles;
-      if (progress) progress(local.tiles, tiles_x * tiles_y);
+      if (progress) progress(local.tiles, tiles);
     }
   if (stats) *stats = local;
-
-  std::vector<vec4> rgba(static_cast<size_t>(width) * height);
-  pixels.download(rgba.data(), pixel_bytes);
-  Image image(width, height);
-  for (size_t i = 0; i < rgba.size(); ++i) image.set(i, glm::vec3(rgba[i]));
   return image;
 }
 
