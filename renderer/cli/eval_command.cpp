@@ -28,6 +28,7 @@ void add_eval_command(CLI::App& app, Action& action) {
   eval->require_subcommand(1);
   add_eval_visible_slope(*eval, action);
   add_eval_cross_section(*eval, action);
+  add_eval_diffraction(*eval, action);
 }
 
 }  // namespace facet::cli

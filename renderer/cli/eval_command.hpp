@@ -30,5 +30,6 @@ std::vector<gpu::EvalRecord> run_gpu_eval(const EvalOptions& options, const char
 
 void add_eval_visible_slope(CLI::App& eval, Action& action);
 void add_eval_cross_section(CLI::App& eval, Action& action);
+void add_eval_diffraction(CLI::App& eval, Action& action);
 
 }  // namespace facet::cli

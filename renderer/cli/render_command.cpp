@@ -8,7 +8,7 @@
 #include "cli/frame_output.hpp"
 #include "common/error.hpp"
 #include "common/progress.hpp"
-#include "gpu/lambert_pass.hpp"
+#include "gpu/direct_pass.hpp"
 #include "scene/scene_loader.hpp"
 #include "vk/context.hpp"
 
@@ -30,14 +30,14 @@ int run_render(const RenderOptions& options) {
   vk::Context context({options.device.device, options.device.validation});
   ProgressBar progress("render", gpu::tile_count(width, height));
   gpu::RenderStats stats;
-  Image image = gpu::render_lambert(context, scene, width, height, &stats,
+  Image image = gpu::render_direct(context, scene, width, height, &stats,
                                     [&](int done, int) { progress.update(done); });
   progress.finish();
   if (context.validation_message_count() > 0)
     throw Error("Vulkan validation reported " + std::to_string(context.validation_message_count()) +
                 " messages; no image written");
   double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  ExrMetadata metadata = frame_metadata(scene, "lambert", 1, context.info().name, stats.gpu_ms, wall_ms);
+  ExrMetadata metadata = frame_metadata(scene, "direct", 1, context.info().name, stats.gpu_ms, wall_ms);
   write_frame(options.output, image, metadata);
   std::cerr << "facet: rendered " << width << "x" << height << " in " << wall_ms << " ms (GPU "
             << stats.gpu_ms << " ms in " << stats.tiles << " tiles) on " << context.info().name

@@ -17,6 +17,6 @@ static_assert(sizeof(GpuPlane) == 48);
 static_assert(sizeof(GpuSphere) == 32);
 static_assert(sizeof(GpuTriangle) == 112);
 static_assert(sizeof(GpuBvhNode) == 32);
-static_assert(sizeof(GpuMaterial) == 32);
+static_assert(sizeof(GpuMaterial) == 48);
 static_assert(sizeof(GpuTile) == 16);
 }  // namespace facet::gpu

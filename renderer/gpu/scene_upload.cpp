@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstring>
 #include <span>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "scene/bvh.hpp"
@@ -57,8 +59,17 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, i
   std::vector<GpuSphere> spheres;
   for (const Sphere& s : scene.spheres) spheres.push_back({to_vec4(s.center, s.radius), uvec4(s.material)});
   std::vector<GpuMaterial> materials;
-  for (const Material& m : scene.materials)
-    materials.push_back({to_vec4(std::get<LambertMaterial>(m).albedo), uvec4(0)});
+  for (const Material& material : scene.materials)
+    materials.push_back(std::visit(
+        [](const auto& m) -> GpuMaterial {
+          using M = std::decay_t<decltype(m)>;
+          if constexpr (std::is_same_v<M, LambertMaterial>)
+            return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_LAMBERT, 0, 0, 0), vec4(0)};
+          else
+            return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_MICROFLAKE, static_cast<uint>(m.ndf), 0, 0),
+                    vec4(static_cast<float>(m.param), 0, 0, 0)};
+        },
+        material));
 
   Bvh bvh = build_bvh(scene.meshes);
   std::vector<GpuBvhNode> nodes(bvh.nodes.size());

@@ -34,8 +34,20 @@ struct LambertMaterial {
   glm::dvec3 albedo{0.8, 0.8, 0.8};
 };
 
+// Ids of the normal distributions of shaders/lib/cross_section.glsl.
+enum class Ndf : int { Beckmann = 0, Ggx = 1, Ellipsoidal = 2, SphericalGaussian = 3 };
+
+// A semi-infinite half-space of specular microflakes with normal distribution `ndf`
+// (docs/microflake_brdf.md): from a mirror (small alpha) to an isotropic medium (large alpha,
+// or b -> 0). `albedo` scales the single-scattering BRDF per colour channel.
+struct MicroflakeMaterial {
+  Ndf ndf = Ndf::SphericalGaussian;
+  double param = 0.5;  // alpha (beckmann, ggx, sg) or b (kk)
+  glm::dvec3 albedo{1.0, 1.0, 1.0};
+};
+
 // One alternative per material kind; later issues add theirs here.
-using Material = std::variant<LambertMaterial>;
+using Material = std::variant<LambertMaterial, MicroflakeMaterial>;
 
 // An infinite plane through `point` with unit normal `normal`.
 struct Plane {

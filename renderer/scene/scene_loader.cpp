@@ -61,7 +61,24 @@ Material read_material(JsonObjectReader r) {
     r.finish();
     return m;
   }
-  r.fail("type", "must be one of: lambert");
+  if (type == "microflake") {
+    MicroflakeMaterial m;
+    const std::string ndf = r.string("ndf");
+    const char* names[] = {"beckmann", "ggx", "kk", "sg"};
+    int id = -1;
+    for (int i = 0; i < 4; ++i)
+      if (ndf == names[i]) id = i;
+    if (id < 0) r.fail("ndf", "must be one of: beckmann, ggx, kk, sg");
+    m.ndf = static_cast<Ndf>(id);
+    m.param = r.number("param");
+    // The validated domain of the cross-section kernels (docs/cross_sections.md).
+    if (m.ndf == Ndf::Ellipsoidal ? !(m.param > 0.0 && m.param < 1.0) : !(m.param >= 1e-3 && m.param <= 1e3))
+      r.fail("param", m.ndf == Ndf::Ellipsoidal ? "(b) must lie in (0, 1)" : "(alpha) must lie in [1e-3, 1e3]");
+    m.albedo = r.colour("albedo", m.albedo, 1.0);
+    r.finish();
+    return m;
+  }
+  r.fail("type", "must be one of: lambert, microflake");
 }
 
 uint32_t read_material_ref(JsonObjectReader& r, const MaterialIndex& materials) {

@@ -6,7 +6,7 @@
 
 struct DiffractionTableInfo {
   ivec4 shape;  // J (largest stored |bin|), N (Taylor terms), r (window radius in bins), -
-  vec4 patch;   // T (patch period, nm), sigma (coherence, nm), h_s (height unit, nm), R0
+  vec4 scales;  // T (patch period, nm), sigma (coherence, nm), h_s (height unit, nm), R0
 };
 
 #endif

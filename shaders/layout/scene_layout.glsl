@@ -46,9 +46,13 @@ struct GpuBvhNode {
   uint count;
 };
 
+#define FACET_MATERIAL_LAMBERT 0u
+#define FACET_MATERIAL_MICROFLAKE 1u
+
 struct GpuMaterial {
   vec4 albedo;
-  uvec4 kind;  // 0 = lambert
+  uvec4 kind;   // x: FACET_MATERIAL_*, y: ndf id of cross_section.glsl (microflake)
+  vec4 params;  // x: alpha or b (microflake)
 };
 
 // Push constants of the per-pixel passes: the tile of the image this dispatch covers.

@@ -1,14 +1,17 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// One primary ray per pixel through the scene's planes, spheres and BVH of triangles;
-// Lambert shading with a shadow ray toward the directional light.
+// One primary ray per pixel through the scene's planes, spheres and BVH of triangles; direct
+// lighting (Lambert or microflake half-space) with a shadow ray toward the directional light.
+// Specialization constant 0 compiles the microflake branch in only for scenes that use it.
 #include "layout/scene_layout.glsl"
 #include "lib/analytic_intersect.glsl"
 #include "lib/camera.glsl"
 #include "lib/lambert.glsl"
+#include "lib/microflake_shading.glsl"
 #include "lib/triangle_intersect.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = 0) const bool kHasMicroflake = false;
 
 layout(std430, binding = 0) readonly buffer Globals { GpuGlobals globals; };
 layout(std430, binding = 1) readonly buffer Planes { GpuPlane planes[]; };
@@ -87,8 +90,12 @@ void main() {
     // Offset the shadow ray's origin by a distance relative to the scene's scale at p.
     vec3 shadow_origin = p + n * (1e-4 * max(1.0, length(p)));
     float visibility = dot(n, l) > 0.0 && trace(shadow_origin, l, 0.0, kInfinity).material != kNoHit ? 0.0 : 1.0;
-    color = lambert_radiance(materials[hit.material].albedo.rgb, n, l,
-                             globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
+    GpuMaterial m = materials[hit.material];
+    if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
+      color = microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
+                                  visibility, globals.ambient.rgb);
+    else
+      color = lambert_radiance(m.albedo.rgb, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
   }
   pixels[gl_GlobalInvocationID.y * tile.rect.z + gl_GlobalInvocationID.x] = vec4(color, 1.0);
 }

@@ -1,4 +1,5 @@
-// The first GPU render pass: one primary ray per pixel, Lambert shading, shadow rays.
+// The direct-lighting GPU pass: one primary ray per pixel, each material's direct lighting from
+// the directional light (with a shadow ray) plus the ambient fill.
 #pragma once
 
 #include <functional>
@@ -24,7 +25,7 @@ using TileProgress = std::function<void(int, int)>;
 
 // Renders `scene` at width x height in square tiles of `tile_size` pixels, one submission
 // per tile, so no single submission runs for seconds.
-Image render_lambert(vk::Context& context, const Scene& scene, int width, int height,
+Image render_direct(vk::Context& context, const Scene& scene, int width, int height,
                      RenderStats* stats = nullptr, const TileProgress& progress = {},
                      int tile_size = kDefaultTileSize);
 

@@ -1,4 +1,4 @@
-// The CPU twin of the GPU Lambert pass: the same primary rays and shading, in double, with
+// The CPU twin of the GPU direct-lighting pass: the same primary rays and shading, in double, with
 // Embree (through RayCaster) for meshes and the shared f64 kernels for everything else.
 #pragma once
 
@@ -8,6 +8,6 @@
 namespace facet::cpu {
 
 // One primary ray through each pixel centre; parallel over rows (oneTBB).
-Image render_lambert_cpu(const Scene& scene, int width, int height);
+Image render_direct_cpu(const Scene& scene, int width, int height);
 
 }  // namespace facet::cpu

@@ -1,35 +1,42 @@
-#include "gpu/lambert_pass.hpp"
+#include "gpu/direct_pass.hpp"
 
 #include <algorithm>
 #include <array>
+#include <variant>
 #include <vector>
 
 #include "common/error.hpp"
 #include "gpu/scene_upload.hpp"
-#include "render_lambert.spv.h"
+#include "render_direct.spv.h"
 #include "vk/kernel.hpp"
 
 namespace facet::gpu {
 
 namespace {
-constexpr uint32_t kWorkgroup = 8;  // local_size_x/y of render_lambert.comp
+constexpr uint32_t kWorkgroup = 8;  // local_size_x/y of render_direct.comp
+
+bool uses_microflake(const Scene& scene) {
+  for (const Material& m : scene.materials)
+    if (std::holds_alternative<MicroflakeMaterial>(m)) return true;
+  return false;
 }
+}  // namespace
 
 int tile_count(int width, int height, int tile_size) {
   return ((width + tile_size - 1) / tile_size) * ((height + tile_size - 1) / tile_size);
 }
 
-Image render_lambert(vk::Context& context, const Scene& scene, int width, int height,
+Image render_direct(vk::Context& context, const Scene& scene, int width, int height,
                      RenderStats* stats, const TileProgress& progress, int tile_size) {
   if (width <= 0 || height <= 0) throw Error("image size must be positive");
   SceneBuffers buffers = upload_scene(context, scene, width, height);
   // One tile's pixels at a time: frames of any size stay within the storage-buffer range.
   vk::Buffer pixels(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size);
-  vk::Kernel kernel(context, {.name = "render_lambert",
-                              .spirv = render_lambert_spv,
+  vk::Kernel kernel(context, {.name = "render_direct",
+                              .spirv = render_direct_spv,
                               .buffer_count = 7,
                               .push_constant_bytes = sizeof(GpuTile),
-                              .specialization = {}});
+                              .specialization = {{0, uses_microflake(scene) ? 1u : 0u}}});
   const std::array<const vk::Buffer*, 7> bindings = {&buffers.globals, &buffers.planes,
                                                      &buffers.spheres, &buffers.nodes,
                                                      &buffers.triangles, &buffers.materials, &pixels};

@@ -1,6 +1,8 @@
-#include "cpu/lambert_cpu.hpp"
+#include "cpu/direct_cpu.hpp"
 
 #include <cmath>
+#include <type_traits>
+#include <variant>
 
 #include <tbb/parallel_for.h>
 
@@ -12,7 +14,7 @@ namespace facet::cpu {
 
 namespace k = kernels::f64;
 
-Image render_lambert_cpu(const Scene& scene, int width, int height) {
+Image render_direct_cpu(const Scene& scene, int width, int height) {
   const CameraFrame camera = camera_frame(scene.camera, width, height);
   const glm::dvec2 resolution(width, height);
   const glm::dvec3 l = scene.light.direction;
@@ -25,12 +27,19 @@ Image render_lambert_cpu(const Scene& scene, int width, int height) {
       glm::dvec3 color = scene.background;
       if (auto hit = caster.intersect(camera.origin, d)) {
         glm::dvec3 n = hit->shading_normal;
-        // Same scale-relative offset as the GPU pass (shaders/render_lambert.comp).
+        // Same scale-relative offset as the GPU pass (shaders/render_direct.comp).
         glm::dvec3 origin = hit->position + n * (1e-4 * std::max(1.0, glm::length(hit->position)));
         double visibility =
             glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;
-        const auto& albedo = std::get<LambertMaterial>(scene.materials[hit->material]).albedo;
-        color = k::lambert_radiance(albedo, n, l, scene.light.irradiance, visibility, scene.ambient);
+        color = std::visit(
+            [&](const auto& m) {
+              if constexpr (std::is_same_v<std::decay_t<decltype(m)>, LambertMaterial>)
+                return k::lambert_radiance(m.albedo, n, l, scene.light.irradiance, visibility, scene.ambient);
+              else
+                return k::microflake_radiance(static_cast<int>(m.ndf), m.param, m.albedo, n, -d, l,
+                                              scene.light.irradiance, visibility, scene.ambient);
+            },
+            scene.materials[hit->material]);
       }
       image.set(x, y, glm::vec3(color));
     }

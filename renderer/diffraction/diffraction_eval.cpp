@@ -1,0 +1,80 @@
+#include "diffraction/diffraction_eval.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/error.hpp"
+#include "kernels/shared.hpp"
+
+namespace facet::diffraction {
+
+namespace {
+
+using namespace kernels::f64;
+
+DiffractionGeometry geometry(const SpectralTables& t, const DiffractionQuery& q) {
+  return diffraction_geometry(q.wi, q.wr, q.lambda_nm, t.sigma_nm, t.hs_nm);
+}
+
+// Sums the window-weighted Taylor states of the bins within r of the nearest bin.
+DiffractionField window_sum(const SpectralTables& t, const DiffractionGeometry& g,
+                            const std::function<DiffractionTaylor(int, int)>& bin_taylor) {
+  const int jx0 = diffraction_nearest_bin(g.alpha.x, t.period_nm);
+  const int jy0 = diffraction_nearest_bin(g.alpha.y, t.period_nm);
+  DiffractionField field{real2(0.0), real2(0.0)};
+  for (int jy = jy0 - t.r; jy <= jy0 + t.r; ++jy)
+    for (int jx = jx0 - t.r; jx <= jx0 + t.r; ++jx) {
+      if (!diffraction_table_entry(0, jx, jy, t.J).valid) continue;
+      const double weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(jx, jy, t.period_nm),
+                                                      t.sigma_nm);
+      field = diffraction_field_add(field, weight, bin_taylor(jx, jy));
+    }
+  return field;
+}
+
+DiffractionResult result(const SpectralTables& t, const DiffractionGeometry& g, const DiffractionField& field) {
+  const DiffractionValue v = diffraction_value(g, field, t.sigma_nm, t.R0);
+  return {v.brdf, v.P2};
+}
+
+}  // namespace
+
+void validate_query(const DiffractionQuery& q) {
+  for (const glm::dvec3& d : {q.wi, q.wr}) {
+    if (!(std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z))) throw Error("wi and wr must be finite");
+    if (std::abs(glm::length(d) - 1.0) > 1e-6) throw Error("wi and wr must be unit vectors");
+    if (d.z < 0.0) throw Error("wi and wr must point into the upper hemisphere (z >= 0)");
+  }
+  if (!(std::isfinite(q.lambda_nm) && q.lambda_nm > 0.0)) throw Error("lambda_nm must be a positive number");
+}
+
+DiffractionResult evaluate_taylor(const SpectralTables& t, const DiffractionQuery& q) {
+  const DiffractionGeometry g = geometry(t, q);
+  auto coefficient = [&](int n, int jx, int jy) {
+    const DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, t.J);
+    const std::complex<double> c = e.conjugate ? std::conj(t.coefficients[e.index]) : t.coefficients[e.index];
+    return real2(c.real(), c.imag());
+  };
+  return result(t, g, window_sum(t, g, [&](int jx, int jy) {
+                  DiffractionTaylor taylor = diffraction_taylor_start(g, coefficient(0, jx, jy));
+                  for (int n = 1; n < t.N; ++n) taylor = diffraction_taylor_step(taylor, g, coefficient(n, jx, jy));
+                  return taylor;
+                }));
+}
+
+double exact_phase_w(const DiffractionQuery& q) { return std::min(-(q.wi.z + q.wr.z), -1e-9); }
+
+DiffractionResult evaluate_from_bins(const SpectralTables& t, const DiffractionQuery& q,
+                                     const std::function<std::complex<double>(int, int)>& bin_coefficient) {
+  const DiffractionGeometry g = geometry(t, q);
+  const double w = exact_phase_w(q);
+  // Split P(j) = H_0(j) + w rest(j) as the Taylor path does; H_0 is 1 at bin 0 and 0 elsewhere.
+  return result(t, g, window_sum(t, g, [&](int jx, int jy) {
+                  const std::complex<double> flat = (jx == 0 && jy == 0) ? 1.0 : 0.0;
+                  const std::complex<double> rest = (bin_coefficient(jx, jy) - flat) / w;
+                  return DiffractionTaylor(real2(flat.real(), 0.0), real2(rest.real(), rest.imag()), real2(0.0),
+                                           0.0);
+                }));
+}
+
+}  // namespace facet::diffraction

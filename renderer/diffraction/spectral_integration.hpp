@@ -1,0 +1,38 @@
+// Integration over wavelength: a spectral quantity f(lambda) (e.g. a BRDF) lit by a light
+// spectrum and seen by the CIE 1931 2-degree observer, to linear sRGB (docs/diffraction.md).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "diffraction/spectral_tables.hpp"
+
+namespace facet::diffraction {
+
+enum class Illuminant { D65, E };  // E: equal energy ("flat")
+
+// Uniform wavelength samples over 360..830 nm with XYZ weights cmf(lambda) S(lambda) h (the
+// trapezoid rule), normalised so that f = 1 gives Y = 1.
+struct WavelengthSamples {
+  std::vector<double> lambda_nm;
+  std::vector<glm::dvec3> xyz_weight;
+};
+
+WavelengthSamples wavelength_samples(double spacing_nm, Illuminant light = Illuminant::D65);
+
+// The largest spacing (470 nm / an integer) at which the colour of a spectrally flat surface (the
+// light's own white) is within `tolerance` (max |XYZ error|, Y = 1) of the 1 nm sum.
+double observer_spacing(double tolerance, Illuminant light = Illuminant::D65);
+
+// The spacing that resolves the narrowest diffraction peak in wavelength the tables can produce:
+// a peak of standard deviation s = lambda_min / (sqrt(2) k_max sigma |u|_max) sampled at h has a
+// relative Poisson-summation error exp(-2 pi^2 s^2 / h^2) <= tolerance.
+double peak_spacing(const SpectralTables& tables, double lambda_min_nm, double tolerance);
+
+// sum_i f(lambda_i) weight_i, as linear sRGB (shaders/lib/spectral_srgb.glsl).
+glm::dvec3 integrate_linear_srgb(const WavelengthSamples& samples, const std::function<double(double)>& f);
+glm::dvec3 integrate_xyz(const WavelengthSamples& samples, const std::function<double(double)>& f);
+
+}  // namespace facet::diffraction
