@@ -6,6 +6,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "common/error.hpp"
 #include "cpu/ray_caster.hpp"
 #include "kernels/shared.hpp"
 #include "scene/camera_frame.hpp"
@@ -15,6 +16,13 @@ namespace facet::cpu {
 namespace k = kernels::f64;
 
 Image render_direct_cpu(const Scene& scene, int width, int height) {
+  // The twin of the GPU pass renders what it renders; sub-pixel materials are the reference's.
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    if (std::holds_alternative<ColormapTextureMaterial>(scene.materials[i]) ||
+        std::holds_alternative<MicrosurfaceMaterial>(scene.materials[i]))
+      throw Error("material '" + scene.material_names[i] + "' (" + material_type_name(scene.materials[i]) +
+                  ") is not supported by the direct pass; use facet reference");
+  }
   const CameraFrame camera = camera_frame(scene.camera, width, height);
   const glm::dvec2 resolution(width, height);
   const glm::dvec3 l = scene.light.direction;
@@ -33,8 +41,11 @@ Image render_direct_cpu(const Scene& scene, int width, int height) {
             glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;
         color = std::visit(
             [&](const auto& m) {
-              if constexpr (std::is_same_v<std::decay_t<decltype(m)>, LambertMaterial>)
+              using M = std::decay_t<decltype(m)>;
+              if constexpr (std::is_same_v<M, LambertMaterial>)
                 return k::lambert_radiance(m.albedo, n, l, scene.light.irradiance, visibility, scene.ambient);
+              else if constexpr (!std::is_same_v<M, MicroflakeMaterial>)
+                return scene.background;  // refused above
               else
                 return k::microflake_radiance(static_cast<int>(m.ndf), m.param, m.albedo, n, -d, l,
                                               scene.light.irradiance, visibility, scene.ambient);

@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "kernels/shared.hpp"
 #include "scene/mesh_check.hpp"
+#include "scene/plane_frame.hpp"
 
 namespace facet {
 
@@ -39,18 +40,18 @@ RTCRay embree_ray(const glm::dvec3& o, const glm::dvec3& d, double t_max) {
   return ray;
 }
 
-// Orthonormal tangents of a unit normal (Duff et al. 2017, "Building an orthonormal basis, revisited").
-std::pair<glm::dvec3, glm::dvec3> tangent_frame(const glm::dvec3& n) {
-  const double s = std::copysign(1.0, n.z);
-  const double a = -1.0 / (s + n.z);
-  const double b = n.x * n.y * a;
-  return {{1.0 + s * n.x * n.x * a, s * b, -s * n.x}, {b, s + n.y * n.y * a, -n.y}};
-}
-
 // Turns the normals toward the side the ray comes from (see ray_caster.hpp).
 void face_toward_ray(Hit& hit, const glm::dvec3& d) {
   if (glm::dot(hit.geometric_normal, d) > 0.0) hit.geometric_normal = -hit.geometric_normal;
   if (glm::dot(hit.shading_normal, hit.geometric_normal) < 0.0) hit.shading_normal = -hit.shading_normal;
+}
+
+// Whether a point of a finite plane lies on its rectangle (scene.hpp, Plane::size).
+bool inside_rectangle(const Plane& plane, const glm::dvec3& position) {
+  const PlaneFrame frame = plane_frame(plane);
+  const glm::dvec3 r = position - plane.point;
+  return std::abs(glm::dot(r, frame.tangent)) <= 0.5 * plane.size->x &&
+         std::abs(glm::dot(r, frame.bitangent)) <= 0.5 * plane.size->y;
 }
 
 struct AnalyticHit {
@@ -64,8 +65,9 @@ AnalyticHit nearest_analytic(const Scene& scene, const glm::dvec3& o, const glm:
   AnalyticHit best;
   double limit = t_max;
   for (size_t i = 0; i < scene.planes.size(); ++i) {
-    const double t = intersect_plane(o, d, scene.planes[i].point, scene.planes[i].normal, 0.0, limit);
-    if (t > 0.0) best = {limit = t, false, i};
+    const Plane& p = scene.planes[i];
+    const double t = intersect_plane(o, d, p.point, p.normal, 0.0, limit);
+    if (t > 0.0 && (!p.size || inside_rectangle(p, o + t * d))) best = {limit = t, false, i};
   }
   for (size_t i = 0; i < scene.spheres.size(); ++i) {
     const double t = intersect_sphere(o, d, scene.spheres[i].center, scene.spheres[i].radius, 0.0, limit);
@@ -89,9 +91,10 @@ Hit analytic_hit(const Scene& scene, const AnalyticHit& a, const glm::dvec3& o, 
   } else {
     const Plane& p = scene.planes[a.index];
     hit.position = o + a.t * d;
-    hit.geometric_normal = glm::normalize(p.normal);  // unit from the loader, not always from code
-    const auto [t1, t2] = tangent_frame(hit.geometric_normal);
-    hit.uv = {glm::dot(hit.position - p.point, t1), glm::dot(hit.position - p.point, t2)};
+    const PlaneFrame frame = plane_frame(p);  // the normal is unit from the loader, not always from code
+    hit.geometric_normal = frame.normal;
+    hit.uv = glm::dvec2(glm::dot(hit.position - p.point, frame.tangent), glm::dot(hit.position - p.point, frame.bitangent)) *
+             p.uv_scale;
     hit.material = p.material;
   }
   hit.shading_normal = hit.geometric_normal;

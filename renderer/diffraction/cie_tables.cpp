@@ -18,14 +18,22 @@ struct UniformTable {
   double first_nm = 0.0, step_nm = 0.0;
   std::vector<std::vector<double>> rows;  // without lambda
 
+  // Catmull-Rom (C1 cubic) interpolation: a linear one would put a kink at every entry, and a
+  // diffraction peak narrower than the 1 nm spacing would then be integrated with O(h^2) error.
   std::vector<double> at(double lambda_nm) const {
     const double position = (lambda_nm - first_nm) / step_nm;
-    if (!(position >= 0.0 && position <= static_cast<double>(rows.size() - 1)))
-      return std::vector<double>(rows[0].size(), 0.0);
-    const size_t lower = std::min(static_cast<size_t>(position), rows.size() - 2);
-    const double t = position - static_cast<double>(lower);
-    std::vector<double> v(rows[lower].size());
-    for (size_t c = 0; c < v.size(); ++c) v[c] = (1.0 - t) * rows[lower][c] + t * rows[lower + 1][c];
+    const size_t last = rows.size() - 1;
+    if (!(position >= 0.0 && position <= static_cast<double>(last))) return std::vector<double>(rows[0].size(), 0.0);
+    const size_t i = std::min(static_cast<size_t>(position), last - 1);
+    const double t = position - static_cast<double>(i);
+    const auto& p0 = rows[i == 0 ? 0 : i - 1];
+    const auto& p1 = rows[i];
+    const auto& p2 = rows[i + 1];
+    const auto& p3 = rows[std::min(i + 2, last)];
+    std::vector<double> v(p1.size());
+    for (size_t c = 0; c < v.size(); ++c)
+      v[c] = p1[c] + 0.5 * t * (p2[c] - p0[c] + t * (2 * p0[c] - 5 * p1[c] + 4 * p2[c] - p3[c] +
+                                                     t * (3 * (p1[c] - p2[c]) + p3[c] - p0[c])));
     return v;
   }
 };

@@ -56,7 +56,7 @@ double observer_spacing(double tolerance, Illuminant light) {
 double peak_spacing(const SpectralTables& tables, double lambda_min_nm, double tolerance) {
   const double k_max = 2.0 * kPi / lambda_min_nm;
   const double s = lambda_min_nm / (std::sqrt(2.0) * k_max * tables.sigma_nm * 2.0);
-  return s * kPi * std::sqrt(2.0 / std::log(1.0 / tolerance));
+  return s * kPi * std::sqrt(2.0 / std::log(2.0 / tolerance));
 }
 
 glm::dvec3 integrate_xyz(const WavelengthSamples& samples, const std::function<double(double)>& f) {

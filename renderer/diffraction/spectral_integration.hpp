@@ -28,7 +28,7 @@ double observer_spacing(double tolerance, Illuminant light = Illuminant::D65);
 
 // The spacing that resolves the narrowest diffraction peak in wavelength the tables can produce:
 // a peak of standard deviation s = lambda_min / (sqrt(2) k_max sigma |u|_max) sampled at h has a
-// relative Poisson-summation error exp(-2 pi^2 s^2 / h^2) <= tolerance.
+// relative Poisson-summation error 2 exp(-2 pi^2 s^2 / h^2) <= tolerance (the two aliases +-1/h).
 double peak_spacing(const SpectralTables& tables, double lambda_min_nm, double tolerance);
 
 // sum_i f(lambda_i) weight_i, as linear sRGB (shaders/lib/spectral_srgb.glsl).

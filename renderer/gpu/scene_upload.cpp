@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "common/error.hpp"
 #include "scene/bvh.hpp"
 #include "scene/camera_frame.hpp"
 
@@ -53,6 +54,16 @@ GpuGlobals make_globals(const Scene& scene, int width, int height) {
 }
 
 SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, int height) {
+  // Guards until the GPU methods for sub-pixel detail exist (issue 6): a clear refusal, never a crash.
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    if (std::holds_alternative<ColormapTextureMaterial>(scene.materials[i]) ||
+        std::holds_alternative<MicrosurfaceMaterial>(scene.materials[i]))
+      throw Error("material '" + scene.material_names[i] + "' (" + material_type_name(scene.materials[i]) +
+                  ") is not supported by the GPU renderer yet; use facet reference");
+  }
+  for (const Plane& p : scene.planes) {
+    if (p.size) throw Error("finite planes (\"size\") are not supported by the GPU renderer yet; use facet reference");
+  }
   std::vector<GpuPlane> planes;
   for (const Plane& p : scene.planes)
     planes.push_back({to_vec4(p.point), to_vec4(glm::normalize(p.normal)), uvec4(p.material)});
@@ -65,6 +76,8 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, i
           using M = std::decay_t<decltype(m)>;
           if constexpr (std::is_same_v<M, LambertMaterial>)
             return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_LAMBERT, 0, 0, 0), vec4(0)};
+          else if constexpr (!std::is_same_v<M, MicroflakeMaterial>)
+            return {};  // refused above
           else
             return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_MICROFLAKE, static_cast<uint>(m.ndf), 0, 0),
                     vec4(static_cast<float>(m.param), 0, 0, 0)};

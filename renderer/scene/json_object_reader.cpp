@@ -86,6 +86,15 @@ std::string JsonObjectReader::string(const std::string& key, std::optional<std::
   return v->get<std::string>();
 }
 
+glm::dvec2 JsonObjectReader::vec2(const std::string& key, std::optional<glm::dvec2> fallback) {
+  const nlohmann::json* v = fallback ? optional(key) : required(key);
+  if (v == nullptr) return *fallback;
+  if (!v->is_array() || v->size() != 2 || !is_finite_number((*v)[0]) || !is_finite_number((*v)[1])) {
+    fail(key, "must be an array of 2 finite numbers");
+  }
+  return {(*v)[0].get<double>(), (*v)[1].get<double>()};
+}
+
 glm::dvec3 JsonObjectReader::vec3(const std::string& key, std::optional<glm::dvec3> fallback) {
   const nlohmann::json* v = fallback ? optional(key) : required(key);
   if (v == nullptr) return *fallback;

@@ -26,6 +26,7 @@ class JsonObjectReader {
   double positive_number(const std::string& key, std::optional<double> fallback = std::nullopt);
   int integer_in(const std::string& key, int lo, int hi, std::optional<int> fallback = std::nullopt);
   std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt);
+  glm::dvec2 vec2(const std::string& key, std::optional<glm::dvec2> fallback = std::nullopt);
   glm::dvec3 vec3(const std::string& key, std::optional<glm::dvec3> fallback = std::nullopt);
   glm::dvec3 nonzero_vec3(const std::string& key, std::optional<glm::dvec3> fallback = std::nullopt);
   // A colour: three finite components >= 0 (and <= `max` when given, e.g. 1 for albedo).
@@ -42,6 +43,7 @@ class JsonObjectReader {
   void finish() const;
 
   const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
 
  private:
   const nlohmann::json* required(const std::string& key);

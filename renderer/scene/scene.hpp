@@ -8,11 +8,16 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "assets/scalar_field.hpp"
+#include "scene/colormap.hpp"
 
 namespace facet {
 
@@ -46,14 +51,52 @@ struct MicroflakeMaterial {
   glm::dvec3 albedo{1.0, 1.0, 1.0};
 };
 
-// One alternative per material kind; later issues add theirs here.
-using Material = std::variant<LambertMaterial, MicroflakeMaterial>;
+// A periodic scalar texture (values wrap at its borders), shared with whatever renders it.
+using ScalarTexture = std::shared_ptr<const assets::ScalarField>;
 
-// An infinite plane through `point` with unit normal `normal`.
+// Lambertian, with albedo = colormap(texture(uv)): a scalar texture seen through a colour map
+// (docs/reference.md). The texture repeats with period 1 in uv; texel (i, j) has its centre at
+// uv = ((i + 1/2)/W, (j + 1/2)/H) and values between centres are bilinear.
+struct ColormapTextureMaterial {
+  ScalarTexture texture;
+  Colormap colormap;
+};
+
+// Specular Beckmann microfacets below the resolution of a height field, on the local normal of the
+// field: f = reflectance · D(h) G2(i, o) / (4 cos_i cos_o) in the frame of that normal.
+struct BeckmannSpecular {
+  glm::dvec2 alpha{0.1, 0.1};  // roughness along the plane's tangent and bitangent
+  glm::dvec3 reflectance{0.04, 0.04, 0.04};
+};
+
+// A height field at micro scale laid on a finite plane (tiling across it), rendered as real
+// geometry by the reference. Lambertian with albedo = height_colormap(z) · slope_colormap(|∇z|)
+// (each factor only when given), plus the optional specular lobe.
+struct MicrosurfaceMaterial {
+  ScalarTexture heights;     // h, as loaded or generated
+  double texel_size = 1.0;   // Δ, world units
+  double height_scale = 1.0; // world height z = height_scale · h
+  std::optional<Colormap> height_colormap;  // of z, world units
+  std::optional<Colormap> slope_colormap;   // of |∇z| = tan of the local tilt
+  std::optional<BeckmannSpecular> specular;
+};
+
+// One alternative per material kind; later issues add theirs here.
+using Material = std::variant<LambertMaterial, MicroflakeMaterial, ColormapTextureMaterial, MicrosurfaceMaterial>;
+
+// "lambert", "microflake", "colormap_texture", "microsurface": for messages.
+const char* material_type_name(const Material& material);
+
+// A plane through `point` with unit normal `normal`; infinite unless `size` is given.
+// Its frame is (tangent, bitangent = normal × tangent, normal) (plane_frame.hpp); surface
+// coordinates (x, y) along tangent and bitangent are measured from `point`, and uv = (x, y) · uv_scale.
 struct Plane {
   glm::dvec3 point{0.0};
   glm::dvec3 normal{0.0, 1.0, 0.0};
   uint32_t material = 0;
+  glm::dvec3 tangent{0.0};  // unit, perpendicular to normal; zero: derived from the normal
+  glm::dvec2 uv_scale{1.0, 1.0};
+  std::optional<glm::dvec2> size;  // [w, h]: the rectangle |x| <= w/2, |y| <= h/2
 };
 
 struct Sphere {

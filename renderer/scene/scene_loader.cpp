@@ -11,6 +11,8 @@
 #include "common/error.hpp"
 #include "scene/gltf_loader.hpp"
 #include "scene/json_object_reader.hpp"
+#include "scene/plane_frame.hpp"
+#include "scene/subpixel_materials.hpp"
 #include "scene/transform.hpp"
 
 namespace facet {
@@ -53,7 +55,7 @@ DirectionalLight read_light(JsonObjectReader r) {
   return l;
 }
 
-Material read_material(JsonObjectReader r) {
+Material read_material(JsonObjectReader r, const std::filesystem::path& base_dir) {
   const std::string type = r.string("type");
   if (type == "lambert") {
     LambertMaterial m;
@@ -78,7 +80,9 @@ Material read_material(JsonObjectReader r) {
     r.finish();
     return m;
   }
-  r.fail("type", "must be one of: lambert, microflake");
+  if (type == "colormap_texture") return read_colormap_texture_material(r, base_dir);
+  if (type == "microsurface") return read_microsurface_material(r, base_dir);
+  r.fail("type", "must be one of: lambert, microflake, colormap_texture, microsurface");
 }
 
 uint32_t read_material_ref(JsonObjectReader& r, const MaterialIndex& materials) {
@@ -112,14 +116,37 @@ glm::dmat4 read_transform(JsonObjectReader r) {
   return translate_rotate_scale(translate, rotate_deg, scale);
 }
 
+Plane read_plane(JsonObjectReader& r, const MaterialIndex& materials, const Scene& scene) {
+  Plane p;
+  p.point = r.vec3("point");
+  p.normal = glm::normalize(r.nonzero_vec3("normal"));
+  if (r.has("tangent")) {
+    p.tangent = glm::normalize(r.nonzero_vec3("tangent"));
+    // sin of the angle to the normal; 1e-6 rad leaves a usable frame.
+    if (!(glm::length(glm::cross(p.tangent, p.normal)) > 1e-6)) r.fail("tangent", "must not be parallel to the normal");
+  }
+  p.tangent = plane_frame(p).tangent;  // the derived default, or the given one made perpendicular
+  p.uv_scale = r.vec2("uv_scale", p.uv_scale);
+  if (!(p.uv_scale.x != 0.0 && p.uv_scale.y != 0.0)) r.fail("uv_scale", "must have non-zero components");
+  if (r.has("size")) {
+    p.size = r.vec2("size");
+    if (!(p.size->x > 0.0 && p.size->y > 0.0)) r.fail("size", "must be [w, h] with w, h > 0");
+  }
+  p.material = read_material_ref(r, materials);
+  if (std::holds_alternative<MicrosurfaceMaterial>(scene.materials[p.material]) && !p.size)
+    r.fail("material", "is a microsurface, which needs a finite plane (give the plane a \"size\")");
+  return p;
+}
+
 void read_object(JsonObjectReader r, const MaterialIndex& materials, const std::filesystem::path& base_dir,
                  const std::string& path, Scene& scene) {
   const std::string type = r.string("type");
+  const auto reject_microsurface = [&](uint32_t material) {
+    if (std::holds_alternative<MicrosurfaceMaterial>(scene.materials[material]))
+      r.fail("material", "is a microsurface, which only finite planes can have");
+  };
   if (type == "plane") {
-    Plane p;
-    p.point = r.vec3("point");
-    p.normal = glm::normalize(r.nonzero_vec3("normal"));
-    p.material = read_material_ref(r, materials);
+    const Plane p = read_plane(r, materials, scene);
     r.finish();
     scene.planes.push_back(p);
   } else if (type == "sphere") {
@@ -127,12 +154,14 @@ void read_object(JsonObjectReader r, const MaterialIndex& materials, const std::
     s.center = r.vec3("center");
     s.radius = r.positive_number("radius");
     s.material = read_material_ref(r, materials);
+    reject_microsurface(s.material);
     r.finish();
     scene.spheres.push_back(s);
   } else if (type == "mesh") {
     const std::string file = r.string("file");
     if (file.empty()) r.fail("file", "must be a non-empty path");
     const uint32_t material = read_material_ref(r, materials);
+    reject_microsurface(material);
     const glm::dmat4 transform =
         r.has("transform") ? read_transform(JsonObjectReader(r.value("transform"), r.file(), r.key_path("transform")))
                            : glm::dmat4(1.0);
@@ -184,6 +213,12 @@ std::pair<size_t, size_t> line_and_column(const std::string& text, size_t byte) 
 
 }  // namespace
 
+const char* material_type_name(const Material& material) {
+  constexpr const char* names[] = {"lambert", "microflake", "colormap_texture", "microsurface"};
+  static_assert(std::variant_size_v<Material> == std::size(names));
+  return names[material.index()];
+}
+
 Scene parse_scene(const Json& document, const std::filesystem::path& source) {
   const std::string file = display_name(source);
   JsonObjectReader top(document, file, "");
@@ -201,7 +236,7 @@ Scene parse_scene(const Json& document, const std::filesystem::path& source) {
     if (!materials.is_object()) top.fail("materials", "must be an object mapping names to materials");
     for (const auto& [name, m] : materials.items()) {
       material_index[name] = static_cast<uint32_t>(scene.materials.size());
-      scene.materials.push_back(read_material(JsonObjectReader(m, file, "materials." + name)));
+      scene.materials.push_back(read_material(JsonObjectReader(m, file, "materials." + name), source.parent_path()));
       scene.material_names.push_back(name);
     }
   }
