@@ -8,16 +8,18 @@ Kernel::Kernel(Context& context, const KernelDesc& desc)
     : context_(&context),
       name_(desc.name),
       buffer_count_(desc.buffer_count),
+      image_count_(desc.image_count),
       push_constant_bytes_(desc.push_constant_bytes) {
   VkDevice device = context.device();
   if (desc.push_constant_bytes > context.limits().maxPushConstantsSize)
     throw Error("kernel " + name_ + ": push constants exceed the device limit");
 
-  std::vector<VkDescriptorSetLayoutBinding> bindings(desc.buffer_count);
-  for (uint32_t i = 0; i < desc.buffer_count; ++i)
-    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  std::vector<VkDescriptorSetLayoutBinding> bindings(desc.buffer_count + desc.image_count);
+  for (uint32_t i = 0; i < bindings.size(); ++i)
+    bindings[i] = {i, i < desc.buffer_count ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1,
+                   VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  set_info.bindingCount = desc.buffer_count;
+  set_info.bindingCount = static_cast<uint32_t>(bindings.size());
   set_info.pBindings = bindings.data();
   check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout_),
         "vkCreateDescriptorSetLayout");
@@ -70,9 +72,14 @@ Kernel::~Kernel() {
 }
 
 double Kernel::dispatch(std::span<const Buffer* const> buffers, const void* push, glm::uvec3 groups) {
-  if (buffers.size() != buffer_count_)
-    throw Error("internal: kernel " + name_ + " expects " + std::to_string(buffer_count_) +
-                " buffers, got " + std::to_string(buffers.size()));
+  return dispatch(buffers, {}, push, groups);
+}
+
+double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const StorageImage* const> images,
+                        const void* push, glm::uvec3 groups) {
+  if (buffers.size() != buffer_count_ || images.size() != image_count_)
+    throw Error("internal: kernel " + name_ + " expects " + std::to_string(buffer_count_) + " buffers and " +
+                std::to_string(image_count_) + " images");
   const auto& limits = context_->limits();
   for (int axis = 0; axis < 3; ++axis)
     if (groups[axis] > limits.maxComputeWorkGroupCount[axis])
@@ -98,20 +105,33 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, const void* push
     ~Release() { vkFreeDescriptorSets(device, pool, 1, &set); }
   } release{device, context_->descriptor_pool(), set};
 
-  std::vector<VkDescriptorBufferInfo> infos(buffers.size());
-  std::vector<VkWriteDescriptorSet> writes(buffers.size());
-  for (uint32_t i = 0; i < buffers.size(); ++i) {
-    infos[i] = {buffers[i]->handle(), 0, VK_WHOLE_SIZE};
+  std::vector<VkDescriptorBufferInfo> buffer_infos(buffers.size());
+  std::vector<VkDescriptorImageInfo> image_infos(images.size());
+  std::vector<VkWriteDescriptorSet> writes(buffers.size() + images.size());
+  for (uint32_t i = 0; i < writes.size(); ++i) {
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set;
     writes[i].dstBinding = i;
     writes[i].descriptorCount = 1;
-    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[i].pBufferInfo = &infos[i];
+    if (i < buffers.size()) {
+      buffer_infos[i] = {buffers[i]->handle(), 0, VK_WHOLE_SIZE};
+      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+      writes[i].pBufferInfo = &buffer_infos[i];
+    } else {
+      image_infos[i - buffers.size()] = {VK_NULL_HANDLE, images[i - buffers.size()]->view(), VK_IMAGE_LAYOUT_GENERAL};
+      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+      writes[i].pImageInfo = &image_infos[i - buffers.size()];
+    }
   }
   vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 
   return context_->submit_and_wait([&](VkCommandBuffer cmd) {
+    // Earlier host writes and transfers (uploads) become visible to the shader.
+    VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
     if (push_constant_bytes_ > 0)

@@ -1,5 +1,6 @@
 // A compute kernel: a SPIR-V module specialised into a pipeline, with storage buffers at
-// bindings 0..N-1 of set 0 and an optional push-constant block.
+// bindings 0..B-1 of set 0, storage images at bindings B..B+I-1, and an optional push-constant
+// block.
 //
 // Specialization constants select features at pipeline creation, so a scene compiles only
 // what it uses. Each dispatch() is its own submission, so callers split long work into
@@ -16,6 +17,7 @@
 
 #include "vk/buffer.hpp"
 #include "vk/context.hpp"
+#include "vk/storage_image.hpp"
 
 namespace facet::vk {
 
@@ -29,6 +31,7 @@ struct KernelDesc {
   std::span<const uint32_t> spirv;
   uint32_t buffer_count = 0;
   uint32_t push_constant_bytes = 0;
+  uint32_t image_count = 0;
   std::vector<SpecConstant> specialization;
 };
 
@@ -42,11 +45,15 @@ class Kernel {
   // Binds buffers[i] at binding i, pushes `push` (push_constant_bytes of it), dispatches
   // `groups` workgroups and waits. Returns the GPU time in milliseconds.
   double dispatch(std::span<const Buffer* const> buffers, const void* push, glm::uvec3 groups);
+  // The same with storage images at bindings buffer_count.. (a kernel with image_count > 0).
+  double dispatch(std::span<const Buffer* const> buffers, std::span<const StorageImage* const> images,
+                  const void* push, glm::uvec3 groups);
 
  private:
   Context* context_;
   std::string name_;
   uint32_t buffer_count_;
+  uint32_t image_count_;
   uint32_t push_constant_bytes_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;

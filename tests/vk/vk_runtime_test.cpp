@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.hpp"
+#include "image_gradient.spv.h"
 #include "scale_add.spv.h"
 #include "support/vulkan_fixture.hpp"
 #include "vk/buffer.hpp"
@@ -84,6 +85,34 @@ TEST(VkRuntime, BufferBeyondTheStorageRangeIsRefused) {
   const std::array<const vk::Buffer*, 2> bindings = {&big, &small};
   uint64_t push = 0;
   EXPECT_THROW(kernel.dispatch(bindings, &push, {1, 1, 1}), Error);
+}
+
+TEST(VkRuntime, StorageImagesRoundTripThroughAKernel) {
+  auto context = test::make_validated_context();
+  const uint32_t w = 37, h = 21;  // not multiples of the workgroup size
+  std::vector<glm::vec4> texels(w * h);
+  for (uint32_t i = 0; i < texels.size(); ++i) texels[i] = glm::vec4(i, -0.5f * i, 0.25f, 1.0f);
+  vk::StorageImage source(*context, w, h), target(*context, w, h);
+  source.upload(texels.data());
+  glm::uvec2 size(w, h);
+  auto size_buffer = vk::Buffer::from(*context, std::span<const glm::uvec2>(&size, 1));
+  vk::Kernel kernel(*context, {.name = "image_gradient", .spirv = image_gradient_spv, .buffer_count = 1,
+                               .push_constant_bytes = 0, .image_count = 2, .specialization = {}});
+  const std::array<const vk::Buffer*, 1> buffers = {&size_buffer};
+  const std::array<const vk::StorageImage*, 2> images = {&source, &target};
+  kernel.dispatch(buffers, images, nullptr, {(w + 7) / 8, (h + 7) / 8, 1});
+  std::vector<glm::vec4> result(w * h);
+  target.download(result.data());
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x)
+      ASSERT_EQ(result[y * w + x], 2.0f * texels[y * w + x] + glm::vec4(x, y, 0.0f, 1.0f)) << x << " " << y;
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+TEST(VkRuntime, AbsurdImageSizeIsRefused) {
+  auto context = test::make_validated_context();
+  EXPECT_THROW(vk::StorageImage(*context, 1u << 30, 4), Error);
+  EXPECT_THROW(vk::StorageImage(*context, 0, 4), Error);
 }
 
 // The validation layer is live: a deliberate misuse is reported through the handler.
