@@ -16,7 +16,7 @@ layout(std430, binding = 3) readonly buffer Info { DiffractionTableInfo info; };
 layout(push_constant) uniform Push { EvalRange range; };
 
 vec2 coefficient(int n, int jx, int jy) {
-  DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, info.shape.x);
+  DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, info.shape.x, info.shape.w);
   vec2 c = coefficients[e.index];
   return e.conjugate ? vec2(c.x, -c.y) : c;
 }
@@ -33,7 +33,7 @@ void main() {
   DiffractionField field = DiffractionField(vec2(0.0), vec2(0.0));
   for (int jy = jy0 - r; jy <= jy0 + r; ++jy) {
     for (int jx = jx0 - r; jx <= jx0 + r; ++jx) {
-      if (!diffraction_table_entry(0, jx, jy, J).valid) continue;
+      if (!diffraction_table_entry(0, jx, jy, J, 1).valid) continue;
       float weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(jx, jy, T), sigma);
       DiffractionTaylor t = diffraction_taylor_start(g, coefficient(0, jx, jy));
       for (int n = 1; n < N; ++n) t = diffraction_taylor_step(t, g, coefficient(n, jx, jy));

@@ -22,5 +22,6 @@ void add_info_command(CLI::App& app, Action& action);
 void add_make_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_eval_command(CLI::App& app, Action& action);
+void add_reference_command(CLI::App& app, Action& action);
 
 }  // namespace facet::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   facet::cli::add_make_command(app, action);
   facet::cli::add_compare_command(app, action);
   facet::cli::add_eval_command(app, action);
+  facet::cli::add_reference_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

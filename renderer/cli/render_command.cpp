@@ -21,23 +21,25 @@ struct RenderOptions {
   DeviceOptions device;
   ResolutionOptions resolution;
   OutputOptions output;
+  std::string method = "naive";
 };
 
 int run_render(const RenderOptions& options) {
   auto start = std::chrono::steady_clock::now();
   Scene scene = load_scene(options.scene);
   auto [width, height] = options.resolution.resolve(scene.camera);
+  const gpu::RenderMethod method = gpu::RenderMethod::parse(options.method);
   vk::Context context({options.device.device, options.device.validation});
   ProgressBar progress("render", gpu::tile_count(width, height));
   gpu::RenderStats stats;
-  Image image = gpu::render_direct(context, scene, width, height, &stats,
+  Image image = gpu::render_direct(context, scene, width, height, method, &stats,
                                     [&](int done, int) { progress.update(done); });
   progress.finish();
   if (context.validation_message_count() > 0)
     throw Error("Vulkan validation reported " + std::to_string(context.validation_message_count()) +
                 " messages; no image written");
   double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  ExrMetadata metadata = frame_metadata(scene, "direct", 1, context.info().name, stats.gpu_ms, wall_ms);
+  ExrMetadata metadata = frame_metadata(scene, method.name(), method.samples_per_axis * method.samples_per_axis, context.info().name, stats.gpu_ms, wall_ms);
   write_frame(options.output, image, metadata);
   std::cerr << "facet: rendered " << width << "x" << height << " in " << wall_ms << " ms (GPU "
             << stats.gpu_ms << " ms in " << stats.tiles << " tiles) on " << context.info().name
@@ -52,6 +54,9 @@ void add_render_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<RenderOptions>();
   command->add_option("scene", options->scene, "Scene file (JSON, see scenes/README.md)")->required();
   add_device_options(*command, options->device);
+  command->add_option("--method", options->method,
+                      "How sub-pixel detail becomes a pixel: naive, mip, colormip, ss:K (K x K rays), filtered")
+      ->capture_default_str();
   add_resolution_options(*command, options->resolution);
   add_output_options(*command, options->output);
   command->callback([&action, options] { action = [options] { return run_render(*options); }; });

@@ -47,8 +47,7 @@ void face_toward_ray(Hit& hit, const glm::dvec3& d) {
 }
 
 // Whether a point of a finite plane lies on its rectangle (scene.hpp, Plane::size).
-bool inside_rectangle(const Plane& plane, const glm::dvec3& position) {
-  const PlaneFrame frame = plane_frame(plane);
+bool inside_rectangle(const Plane& plane, const PlaneFrame& frame, const glm::dvec3& position) {
   const glm::dvec3 r = position - plane.point;
   return std::abs(glm::dot(r, frame.tangent)) <= 0.5 * plane.size->x &&
          std::abs(glm::dot(r, frame.bitangent)) <= 0.5 * plane.size->y;
@@ -60,14 +59,15 @@ struct AnalyticHit {
   size_t index = 0;
 };
 
-AnalyticHit nearest_analytic(const Scene& scene, const glm::dvec3& o, const glm::dvec3& d, double t_max) {
+AnalyticHit nearest_analytic(const Scene& scene, const std::vector<PlaneFrame>& frames, const glm::dvec3& o,
+                             const glm::dvec3& d, double t_max) {
   using namespace kernels::f64;
   AnalyticHit best;
   double limit = t_max;
   for (size_t i = 0; i < scene.planes.size(); ++i) {
     const Plane& p = scene.planes[i];
     const double t = intersect_plane(o, d, p.point, p.normal, 0.0, limit);
-    if (t > 0.0 && (!p.size || inside_rectangle(p, o + t * d))) best = {limit = t, false, i};
+    if (t > 0.0 && (!p.size || inside_rectangle(p, frames[i], o + t * d))) best = {limit = t, false, i};
   }
   for (size_t i = 0; i < scene.spheres.size(); ++i) {
     const double t = intersect_sphere(o, d, scene.spheres[i].center, scene.spheres[i].radius, 0.0, limit);
@@ -76,7 +76,8 @@ AnalyticHit nearest_analytic(const Scene& scene, const glm::dvec3& o, const glm:
   return best;
 }
 
-Hit analytic_hit(const Scene& scene, const AnalyticHit& a, const glm::dvec3& o, const glm::dvec3& d) {
+Hit analytic_hit(const Scene& scene, const std::vector<PlaneFrame>& frames, const AnalyticHit& a, const glm::dvec3& o,
+                 const glm::dvec3& d) {
   Hit hit{};
   hit.t = a.t;
   if (a.is_sphere) {
@@ -91,7 +92,7 @@ Hit analytic_hit(const Scene& scene, const AnalyticHit& a, const glm::dvec3& o, 
   } else {
     const Plane& p = scene.planes[a.index];
     hit.position = o + a.t * d;
-    const PlaneFrame frame = plane_frame(p);  // the normal is unit from the loader, not always from code
+    const PlaneFrame& frame = frames[a.index];  // unit normal: from the loader, not always from code
     hit.geometric_normal = frame.normal;
     hit.uv = glm::dvec2(glm::dot(hit.position - p.point, frame.tangent), glm::dot(hit.position - p.point, frame.bitangent)) *
              p.uv_scale;
@@ -153,6 +154,7 @@ struct RayCaster::Embree {
 };
 
 RayCaster::RayCaster(const Scene& scene) : scene_(scene), embree_(std::make_unique<Embree>()) {
+  for (const Plane& p : scene.planes) plane_frames_.push_back(plane_frame(p));
   embree_->device = rtcNewDevice(nullptr);
   if (embree_->device == nullptr) {
     throw Error("cannot create the Embree device (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
@@ -192,9 +194,13 @@ RayCaster::~RayCaster() = default;
 
 std::optional<Hit> RayCaster::intersect(glm::dvec3 o, glm::dvec3 d, double t_max) const {
   if (!finite(o) || !finite(d) || std::isnan(t_max) || !(t_max > 0.0)) return std::nullopt;
-  const AnalyticHit analytic = nearest_analytic(scene_, o, d, t_max);
+  const AnalyticHit analytic = nearest_analytic(scene_, plane_frames_, o, d, t_max);
   const double limit = analytic.t > 0.0 ? analytic.t : t_max;
 
+  if (scene_.meshes.empty()) {  // Embree has nothing to add: skip its call (most of a plane query's cost)
+    if (analytic.t > 0.0) return analytic_hit(scene_, plane_frames_, analytic, o, d);
+    return std::nullopt;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit ray_hit{};
@@ -203,7 +209,7 @@ std::optional<Hit> RayCaster::intersect(glm::dvec3 o, glm::dvec3 d, double t_max
   rtcIntersect1(embree_->scene, &context, &ray_hit);
 
   std::optional<Hit> best;
-  if (analytic.t > 0.0) best = analytic_hit(scene_, analytic, o, d);
+  if (analytic.t > 0.0) best = analytic_hit(scene_, plane_frames_, analytic, o, d);
   if (ray_hit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
     const Hit mesh =
         mesh_hit(scene_.meshes[ray_hit.hit.geomID], ray_hit.hit.primID, ray_hit.hit, ray_hit.ray.tfar, o, d);
@@ -214,7 +220,8 @@ std::optional<Hit> RayCaster::intersect(glm::dvec3 o, glm::dvec3 d, double t_max
 
 bool RayCaster::occluded(glm::dvec3 o, glm::dvec3 d, double t_max) const {
   if (!finite(o) || !finite(d) || std::isnan(t_max) || !(t_max > 0.0)) return false;
-  if (nearest_analytic(scene_, o, d, t_max).t > 0.0) return true;
+  if (nearest_analytic(scene_, plane_frames_, o, d, t_max).t > 0.0) return true;
+  if (scene_.meshes.empty()) return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray = embree_ray(o, d, t_max);

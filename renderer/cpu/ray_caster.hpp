@@ -17,9 +17,11 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "scene/plane_frame.hpp"
 #include "scene/scene.hpp"
 
 namespace facet {
@@ -45,6 +47,7 @@ class RayCaster {
  private:
   struct Embree;
   const Scene& scene_;
+  std::vector<PlaneFrame> plane_frames_;  // parallel to scene_.planes: the uv axes, computed once
   std::unique_ptr<Embree> embree_;
 };
 

@@ -24,7 +24,7 @@ DiffractionField window_sum(const SpectralTables& t, const DiffractionGeometry& 
   DiffractionField field{real2(0.0), real2(0.0)};
   for (int jy = jy0 - t.r; jy <= jy0 + t.r; ++jy)
     for (int jx = jx0 - t.r; jx <= jx0 + t.r; ++jx) {
-      if (!diffraction_table_entry(0, jx, jy, t.J).valid) continue;
+      if (!diffraction_table_entry(0, jx, jy, t.J, 1).valid) continue;
       const double weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(jx, jy, t.period_nm),
                                                       t.sigma_nm);
       field = diffraction_field_add(field, weight, bin_taylor(jx, jy));
@@ -51,7 +51,7 @@ void validate_query(const DiffractionQuery& q) {
 DiffractionResult evaluate_taylor(const SpectralTables& t, const DiffractionQuery& q) {
   const DiffractionGeometry g = geometry(t, q);
   auto coefficient = [&](int n, int jx, int jy) {
-    const DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, t.J);
+    const DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, t.J, t.stored_terms);
     const std::complex<double> c = e.conjugate ? std::conj(t.coefficients[e.index]) : t.coefficients[e.index];
     return real2(c.real(), c.imag());
   };

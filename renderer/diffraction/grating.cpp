@@ -76,13 +76,17 @@ Grating procedural(JsonObjectReader& reader, const std::string& type) {
 Grating height_map(JsonObjectReader& reader, const std::filesystem::path& base) {
   std::filesystem::path path = reader.string("path");
   if (path.is_relative()) path = base / path;
-  HeightMapUnits units{reader.positive_number("nm_per_sample"), reader.positive_number("nm_per_unit"),
-                       reader.string("channel", "Y")};
-  Grating g;
-  g.height_nm = read_height_map(path, units, g.samples);
-  if (g.samples < kMinSamples || g.samples > kMaxSamples)
+  HeightMapUnits units;
+  if (reader.has("nm_per_sample")) units.nm_per_sample = reader.positive_number("nm_per_sample");
+  if (reader.has("nm_per_unit")) units.nm_per_unit = reader.positive_number("nm_per_unit");
+  units.channel = reader.string("channel", "Y");
+  HeightMap map = read_height_map(path, units);
+  if (map.samples < kMinSamples || map.samples > kMaxSamples)
     reader.fail("path", "must be a square height map of 8..4096 samples");
-  g.sample_nm = units.nm_per_sample;
+  Grating g;
+  g.samples = map.samples;
+  g.sample_nm = map.nm_per_sample;
+  g.height_nm = std::move(map.height_nm);
   return g;
 }
 

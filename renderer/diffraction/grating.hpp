@@ -27,7 +27,8 @@ struct Grating {
 //               "size_um" (must hold a whole number of periods), "samples" (8..4096),
 //               "duty" (rectangular/fingers, 0..1 exclusive, default 0.5),
 //               "finger_length_nm" (fingers: length of a ridge segment along y)
-//   "heightmap": "path" (.exr or 16/8-bit .png), "nm_per_sample", "nm_per_unit", "channel" (EXR, "Y")
+//   "heightmap": "path" (.exr, 16/8-bit grey .png, or Gwyddion .gsf), "channel" (EXR, default "Y"),
+//               "nm_per_sample", "nm_per_unit" (required for .exr/.png, absent for .gsf, which has units)
 //   every type: "coherence_um" (default: size / 2), "ior" (default 1.56)
 // Throws facet::Error with one line naming the key.
 Grating parse_grating(const std::string& json_or_file);

@@ -28,7 +28,8 @@ std::vector<double> sinusoid_heights(PatchGrid grid, double period_nm, double am
 
 std::vector<double> rectangular_heights(PatchGrid grid, double period_nm, double amplitude_nm, double duty) {
   return sample_patch(grid, [=](double x, double) {
-    return fraction(x / period_nm) < duty ? amplitude_nm : -amplitude_nm;
+    // Samples on an edge go to the period that starts there, whatever the rounding of x / period.
+    return fraction(x / period_nm + 1e-9) < duty ? amplitude_nm : -amplitude_nm;
   });
 }
 

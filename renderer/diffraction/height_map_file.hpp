@@ -2,19 +2,28 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace facet::diffraction {
 
+// Units given by the user: required for .exr and .png, which carry none; must be absent for .gsf,
+// whose header states them.
 struct HeightMapUnits {
-  double nm_per_sample;  // lateral spacing
-  double nm_per_unit;    // EXR: nm per stored value; PNG: nm per integer code step
-  std::string channel;   // EXR channel to read
+  std::optional<double> nm_per_sample;  // lateral spacing
+  std::optional<double> nm_per_unit;    // EXR: nm per stored value; PNG: nm per integer code step
+  std::string channel;                  // EXR channel to read
 };
 
-// Row-major heights in nm of a square map; `samples` receives its side. .exr or .png (8/16-bit
-// grey). Throws facet::Error on unreadable or non-square files and on non-finite heights.
-std::vector<double> read_height_map(const std::filesystem::path& path, const HeightMapUnits& units, int& samples);
+struct HeightMap {
+  int samples = 0;  // the map is samples x samples
+  double nm_per_sample = 0.0;
+  std::vector<double> height_nm;  // row-major
+};
+
+// .exr, .png (8/16-bit grey) or .gsf (Gwyddion Simple Field). Throws facet::Error on unreadable or
+// non-square files, missing or superfluous units and non-finite heights.
+HeightMap read_height_map(const std::filesystem::path& path, const HeightMapUnits& units);
 
 }  // namespace facet::diffraction

@@ -56,7 +56,12 @@ double observer_spacing(double tolerance, Illuminant light) {
 double peak_spacing(const SpectralTables& tables, double lambda_min_nm, double tolerance) {
   const double k_max = 2.0 * kPi / lambda_min_nm;
   const double s = lambda_min_nm / (std::sqrt(2.0) * k_max * tables.sigma_nm * 2.0);
-  return s * kPi * std::sqrt(2.0 / std::log(2.0 / tolerance));
+  return s * kPi * std::sqrt(2.0 / std::log(4.0 / tolerance));  // half the tolerance for the aliases
+}
+
+WavelengthSamples diffraction_wavelength_samples(const SpectralTables& tables, double tolerance, Illuminant light) {
+  return wavelength_samples(std::min(observer_spacing(tolerance, light), peak_spacing(tables, kCieLambdaMinNm, tolerance)),
+                            light);
 }
 
 glm::dvec3 integrate_xyz(const WavelengthSamples& samples, const std::function<double(double)>& f) {

@@ -28,8 +28,13 @@ double observer_spacing(double tolerance, Illuminant light = Illuminant::D65);
 
 // The spacing that resolves the narrowest diffraction peak in wavelength the tables can produce:
 // a peak of standard deviation s = lambda_min / (sqrt(2) k_max sigma |u|_max) sampled at h has a
-// relative Poisson-summation error 2 exp(-2 pi^2 s^2 / h^2) <= tolerance (the two aliases +-1/h).
+// relative Poisson-summation error 2 exp(-2 pi^2 s^2 / h^2) (the two aliases +-1/h) <= tolerance / 2, the
+// other half left for the variation of the observer and the light across the peak.
 double peak_spacing(const SpectralTables& tables, double lambda_min_nm, double tolerance);
+
+// The samples a diffraction BRDF of these tables needs: the finer of the two spacings above.
+WavelengthSamples diffraction_wavelength_samples(const SpectralTables& tables, double tolerance,
+                                                 Illuminant light = Illuminant::D65);
 
 // sum_i f(lambda_i) weight_i, as linear sRGB (shaders/lib/spectral_srgb.glsl).
 glm::dvec3 integrate_linear_srgb(const WavelengthSamples& samples, const std::function<double(double)>& f);

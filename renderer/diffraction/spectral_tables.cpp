@@ -40,7 +40,7 @@ int window_radius(double period_nm, double sigma_nm, double tolerance) {
 }
 
 DiffractionTableInfo SpectralTables::info() const {
-  return {ivec4(J, N, r, 0), vec4(period_nm, sigma_nm, hs_nm, R0)};
+  return {ivec4(J, N, r, stored_terms), vec4(period_nm, sigma_nm, hs_nm, R0)};
 }
 
 std::vector<glm::vec2> SpectralTables::coefficients_f32() const {
@@ -65,6 +65,7 @@ SpectralTables build_spectral_tables(const Grating& grating, const TableRange& r
   t.hs_nm = spread > 0.0 ? spread : 1.0;  // a flat patch: any unit works, every H_n>0 is 0
   t.x_max = (kTwoPi / range.lambda_min_nm) * range.w_max * spread;
   t.N = taylor_term_count(t.x_max, range.tolerance);
+  t.stored_terms = t.N;
   t.r = window_radius(t.period_nm, t.sigma_nm, range.tolerance);
   // |u|, |v| <= 2, so k u reaches bin 2 T / lambda_min; the window adds r bins. Beyond the Nyquist
   // bin the sampled height field carries no information.
@@ -81,7 +82,7 @@ SpectralTables build_spectral_tables(const Grating& grating, const TableRange& r
     const auto spectrum = fft.forward(power);
     for (int jy = 0; jy <= t.J; ++jy)
       for (int jx = -t.J; jx <= t.J; ++jx) {
-        const auto entry = kernels::f64::diffraction_table_entry(n, jx, jy, t.J);
+        const auto entry = kernels::f64::diffraction_table_entry(n, jx, jy, t.J, t.stored_terms);
         t.coefficients[entry.index] = scale * stam_bin(spectrum, M, jx, jy);
       }
     for (size_t i = 0; i < power.size(); ++i) power[i] *= normalised[i];

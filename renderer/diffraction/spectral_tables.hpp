@@ -35,7 +35,8 @@ int window_radius(double period_nm, double sigma_nm, double tolerance);
 
 struct SpectralTables {
   int J = 0;                // bins j_x in [-J, J], j_y in [0, J] are stored
-  int N = 0;                // Taylor terms
+  int N = 0;                // Taylor terms evaluated (<= stored_terms; fewer only to trade accuracy for speed)
+  int stored_terms = 0;     // Taylor terms stored per bin
   int r = 0;                // window radius in bins
   double period_nm = 0.0;   // T
   double sigma_nm = 0.0;    // coherence window
@@ -44,7 +45,7 @@ struct SpectralTables {
   double R0 = 0.0;          // Schlick's normal-incidence reflectance
   double x_max = 0.0;       // k_max w_max h_s, the largest Taylor variable the tables are built for
   // H_n(j) = (1/M^2) sum_x ((h(x) - mean) / h_s)^n exp(+i 2 pi j.x / T), at
-  // diffraction_table_entry(n, jx, jy, J).index (shaders/lib/diffraction_table.glsl).
+  // diffraction_table_entry(n, jx, jy, J, stored_terms).index (shaders/lib/diffraction_table.glsl).
   std::vector<std::complex<double>> coefficients;
 
   DiffractionTableInfo info() const;

@@ -15,9 +15,10 @@ namespace facet::gpu {
 namespace {
 constexpr uint32_t kWorkgroup = 8;  // local_size_x/y of render_direct.comp
 
-bool uses_microflake(const Scene& scene) {
+template <class M>
+bool uses(const Scene& scene) {
   for (const Material& m : scene.materials)
-    if (std::holds_alternative<MicroflakeMaterial>(m)) return true;
+    if (std::holds_alternative<M>(m)) return true;
   return false;
 }
 }  // namespace
@@ -26,20 +27,24 @@ int tile_count(int width, int height, int tile_size) {
   return ((width + tile_size - 1) / tile_size) * ((height + tile_size - 1) / tile_size);
 }
 
-Image render_direct(vk::Context& context, const Scene& scene, int width, int height,
-                     RenderStats* stats, const TileProgress& progress, int tile_size) {
+Image render_direct(vk::Context& context, const Scene& scene, int width, int height, const RenderMethod& method,
+                    RenderStats* stats, const TileProgress& progress, int tile_size) {
   if (width <= 0 || height <= 0) throw Error("image size must be positive");
   SceneBuffers buffers = upload_scene(context, scene, width, height);
   // One tile's pixels at a time: frames of any size stay within the storage-buffer range.
   vk::Buffer pixels(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size);
   vk::Kernel kernel(context, {.name = "render_direct",
                               .spirv = render_direct_spv,
-                              .buffer_count = 7,
+                              .buffer_count = 11,
                               .push_constant_bytes = sizeof(GpuTile),
-                              .specialization = {{0, uses_microflake(scene) ? 1u : 0u}}});
-  const std::array<const vk::Buffer*, 7> bindings = {&buffers.globals, &buffers.planes,
-                                                     &buffers.spheres, &buffers.nodes,
-                                                     &buffers.triangles, &buffers.materials, &pixels};
+                              .specialization = {{0, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
+                                                 {1, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
+                                                 {2, static_cast<uint32_t>(method.texture)},
+                                                 {3, static_cast<uint32_t>(method.samples_per_axis)}}});
+  const std::array<const vk::Buffer*, 11> bindings = {
+      &buffers.globals,   &buffers.planes,         &buffers.spheres, &buffers.nodes,     &buffers.triangles,
+      &buffers.materials, &pixels,                 &buffers.texture_levels, &buffers.texels, &buffers.colormaps,
+      &buffers.colormap_points};
   Image image(width, height);
   std::vector<vec4> tile_rgba(static_cast<size_t>(tile_size) * tile_size);
   RenderStats local;

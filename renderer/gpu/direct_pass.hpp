@@ -4,6 +4,7 @@
 
 #include <functional>
 
+#include "gpu/render_method.hpp"
 #include "image/image.hpp"
 #include "scene/scene.hpp"
 #include "vk/context.hpp"
@@ -23,10 +24,10 @@ int tile_count(int width, int height, int tile_size = kDefaultTileSize);
 // Progress callback: tiles done, tiles in all.
 using TileProgress = std::function<void(int, int)>;
 
-// Renders `scene` at width x height in square tiles of `tile_size` pixels, one submission
-// per tile, so no single submission runs for seconds.
-Image render_direct(vk::Context& context, const Scene& scene, int width, int height,
-                     RenderStats* stats = nullptr, const TileProgress& progress = {},
-                     int tile_size = kDefaultTileSize);
+// Renders `scene` at width x height with `method` in square tiles of `tile_size` pixels, one
+// submission per tile, so no single submission runs for seconds.
+Image render_direct(vk::Context& context, const Scene& scene, int width, int height, const RenderMethod& method = {},
+                    RenderStats* stats = nullptr, const TileProgress& progress = {},
+                    int tile_size = kDefaultTileSize);
 
 }  // namespace facet::gpu

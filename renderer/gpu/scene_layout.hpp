@@ -13,10 +13,12 @@ using uint = std::uint32_t;
 #include "layout/scene_layout.glsl"
 
 static_assert(sizeof(GpuGlobals) == 160);
-static_assert(sizeof(GpuPlane) == 48);
+static_assert(sizeof(GpuPlane) == 80);
 static_assert(sizeof(GpuSphere) == 32);
-static_assert(sizeof(GpuTriangle) == 112);
+static_assert(sizeof(GpuTriangle) == 144);
 static_assert(sizeof(GpuBvhNode) == 32);
-static_assert(sizeof(GpuMaterial) == 48);
+static_assert(sizeof(GpuMaterial) == 64);
+static_assert(sizeof(GpuTextureLevel) == 16);
+static_assert(sizeof(GpuColormap) == 32);
 static_assert(sizeof(GpuTile) == 16);
 }  // namespace facet::gpu

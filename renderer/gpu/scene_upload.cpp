@@ -9,7 +9,9 @@
 
 #include "common/error.hpp"
 #include "scene/bvh.hpp"
+#include "gpu/texture_upload.hpp"
 #include "scene/camera_frame.hpp"
+#include "scene/plane_frame.hpp"
 
 namespace facet::gpu {
 
@@ -25,11 +27,16 @@ std::vector<GpuTriangle> flatten_triangles(const Scene& scene, const Bvh& bvh) {
     GpuTriangle tri{};
     vec4* positions[3] = {&tri.p0, &tri.p1, &tri.p2};
     vec4* normals[3] = {&tri.n0, &tri.n1, &tri.n2};
+    // Without uvs, a triangle's uv are its barycentrics, as RayCaster reports them.
+    glm::vec2 uvs[3] = {{0, 0}, {1, 0}, {0, 1}};
     for (int corner = 0; corner < 3; ++corner) {
       uint32_t vertex = mesh.indices[3 * ref.triangle + corner];
       *positions[corner] = to_vec4(mesh.positions[vertex]);
       if (!mesh.normals.empty()) *normals[corner] = to_vec4(mesh.normals[vertex]);
+      if (!mesh.uvs.empty()) uvs[corner] = glm::vec2(mesh.uvs[vertex]);
     }
+    tri.uv01 = vec4(uvs[0], uvs[1]);
+    tri.uv2 = vec4(uvs[2], 0, 0);
     tri.material = uvec4(mesh.material);
     triangles.push_back(tri);
   }
@@ -54,33 +61,36 @@ GpuGlobals make_globals(const Scene& scene, int width, int height) {
 }
 
 SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, int height) {
-  // Guards until the GPU methods for sub-pixel detail exist (issue 6): a clear refusal, never a crash.
-  for (size_t i = 0; i < scene.materials.size(); ++i) {
-    if (std::holds_alternative<ColormapTextureMaterial>(scene.materials[i]) ||
-        std::holds_alternative<MicrosurfaceMaterial>(scene.materials[i]))
+  // Microsurfaces need the filtered microsurface pass (issue 6): a clear refusal, never a crash.
+  for (size_t i = 0; i < scene.materials.size(); ++i)
+    if (std::holds_alternative<MicrosurfaceMaterial>(scene.materials[i]))
       throw Error("material '" + scene.material_names[i] + "' (" + material_type_name(scene.materials[i]) +
                   ") is not supported by the GPU renderer yet; use facet reference");
-  }
-  for (const Plane& p : scene.planes) {
-    if (p.size) throw Error("finite planes (\"size\") are not supported by the GPU renderer yet; use facet reference");
-  }
   std::vector<GpuPlane> planes;
-  for (const Plane& p : scene.planes)
-    planes.push_back({to_vec4(p.point), to_vec4(glm::normalize(p.normal)), uvec4(p.material)});
+  for (const Plane& p : scene.planes) {
+    const PlaneFrame frame = plane_frame(p);
+    const glm::dvec2 half_size = p.size ? 0.5 * *p.size : glm::dvec2(0.0);
+    planes.push_back({to_vec4(p.point), to_vec4(frame.normal), to_vec4(frame.tangent),
+                      vec4(glm::vec2(p.uv_scale), glm::vec2(half_size)), uvec4(p.material)});
+  }
   std::vector<GpuSphere> spheres;
   for (const Sphere& s : scene.spheres) spheres.push_back({to_vec4(s.center, s.radius), uvec4(s.material)});
+  TextureData textures;
   std::vector<GpuMaterial> materials;
   for (const Material& material : scene.materials)
     materials.push_back(std::visit(
-        [](const auto& m) -> GpuMaterial {
+        [&](const auto& m) -> GpuMaterial {
           using M = std::decay_t<decltype(m)>;
           if constexpr (std::is_same_v<M, LambertMaterial>)
-            return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_LAMBERT, 0, 0, 0), vec4(0)};
-          else if constexpr (!std::is_same_v<M, MicroflakeMaterial>)
-            return {};  // refused above
-          else
+            return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_LAMBERT, 0, 0, 0), vec4(0), uvec4(0)};
+          else if constexpr (std::is_same_v<M, MicroflakeMaterial>)
             return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_MICROFLAKE, static_cast<uint>(m.ndf), 0, 0),
-                    vec4(static_cast<float>(m.param), 0, 0, 0)};
+                    vec4(static_cast<float>(m.param), 0, 0, 0), uvec4(0)};
+          else if constexpr (std::is_same_v<M, ColormapTextureMaterial>)
+            return {vec4(1), uvec4(FACET_MATERIAL_COLORMAP_TEXTURE, 0, 0, 0), vec4(0),
+                    add_colormap_texture(textures, m)};
+          else
+            return {};  // refused above
         },
         material));
 
@@ -99,6 +109,10 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, i
       vk::Buffer::from(context, std::span<const GpuBvhNode>(nodes)),
       vk::Buffer::from(context, std::span<const GpuTriangle>(triangles)),
       vk::Buffer::from(context, std::span<const GpuMaterial>(materials)),
+      vk::Buffer::from(context, std::span<const GpuTextureLevel>(textures.levels)),
+      vk::Buffer::from(context, std::span<const vec4>(textures.texels)),
+      vk::Buffer::from(context, std::span<const GpuColormap>(textures.colormaps)),
+      vk::Buffer::from(context, std::span<const vec4>(textures.colormap_points)),
   };
 }
 

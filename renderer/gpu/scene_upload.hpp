@@ -15,6 +15,10 @@ struct SceneBuffers {
   vk::Buffer nodes;
   vk::Buffer triangles;
   vk::Buffer materials;
+  vk::Buffer texture_levels;
+  vk::Buffer texels;
+  vk::Buffer colormaps;
+  vk::Buffer colormap_points;
 };
 
 // The camera block of GpuGlobals for an image of width x height (the scene's own

@@ -96,7 +96,7 @@ struct Plane {
   uint32_t material = 0;
   glm::dvec3 tangent{0.0};  // unit, perpendicular to normal; zero: derived from the normal
   glm::dvec2 uv_scale{1.0, 1.0};
-  std::optional<glm::dvec2> size;  // [w, h]: the rectangle |x| <= w/2, |y| <= h/2
+  std::optional<glm::dvec2> size{};  // [w, h]: the rectangle |x| <= w/2, |y| <= h/2
 };
 
 struct Sphere {

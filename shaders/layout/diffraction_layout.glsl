@@ -5,7 +5,7 @@
 #define FACET_DIFFRACTION_LAYOUT_GLSL
 
 struct DiffractionTableInfo {
-  ivec4 shape;  // J (largest stored |bin|), N (Taylor terms), r (window radius in bins), -
+  ivec4 shape;  // J (largest stored |bin|), N (Taylor terms used), r (window radius in bins), terms stored per bin
   vec4 scales;  // T (patch period, nm), sigma (coherence, nm), h_s (height unit, nm), R0
 };
 

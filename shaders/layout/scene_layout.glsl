@@ -20,6 +20,8 @@ struct GpuGlobals {
 struct GpuPlane {
   vec4 point;
   vec4 normal;
+  vec4 tangent;      // bitangent = cross(normal, tangent)
+  vec4 uv_half_size; // xy: uv_scale; zw: half the rectangle's size, or 0 for an infinite plane
   uvec4 material;
 };
 
@@ -35,6 +37,8 @@ struct GpuTriangle {
   vec4 n0;  // vertex normals; all zero for flat shading
   vec4 n1;
   vec4 n2;
+  vec4 uv01;  // (u0, v0, u1, v1); a mesh without uvs gets the barycentrics (0,0), (1,0), (0,1)
+  vec4 uv2;   // (u2, v2, -, -)
   uvec4 material;
 };
 
@@ -48,11 +52,27 @@ struct GpuBvhNode {
 
 #define FACET_MATERIAL_LAMBERT 0u
 #define FACET_MATERIAL_MICROFLAKE 1u
+#define FACET_MATERIAL_COLORMAP_TEXTURE 2u
 
 struct GpuMaterial {
   vec4 albedo;
-  uvec4 kind;   // x: FACET_MATERIAL_*, y: ndf id of cross_section.glsl (microflake)
-  vec4 params;  // x: alpha or b (microflake)
+  uvec4 kind;     // x: FACET_MATERIAL_*, y: ndf id of cross_section.glsl (microflake)
+  vec4 params;    // x: alpha or b (microflake)
+  uvec4 texture;  // colormap texture: x first moment level, y level count, z first colour-MIP level,
+                  // w colour map index
+};
+
+// One MIP level of a texture in the texel buffer: texel (i, j) is texels[offset + j * width + i].
+// Moment levels hold (E[t], E[t^2], -, -); colour-MIP levels hold (linear RGB of the colour-mapped
+// texture, box-filtered, -).
+struct GpuTextureLevel {
+  uvec4 info;  // offset, width, height, -
+};
+
+// A colour map: control points (linear RGB, position) colormap_points[first .. first + count).
+struct GpuColormap {
+  uvec4 info;   // first, count, steps (1) or linear (0), -
+  vec4 domain;  // the texture value mapped to position 0 (x) and 1 (y)
 };
 
 // Push constants of the per-pixel passes: the tile of the image this dispatch covers.

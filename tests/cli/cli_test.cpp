@@ -51,7 +51,7 @@ TEST_F(Cli, RendersTheDefaultSceneToExrAndPng) {
   EXPECT_EQ(image.width, 64);
   EXPECT_EQ(image.height, 36);
   EXPECT_TRUE(fs::exists(dir_ / "sub" / "default.png"));
-  EXPECT_EQ(std::get<std::string>(metadata.at("facet:method")), "direct");
+  EXPECT_EQ(std::get<std::string>(metadata.at("facet:method")), "naive");
   EXPECT_EQ(std::get<std::int64_t>(metadata.at("facet:spp")), 1);
   EXPECT_NE(std::get<std::string>(metadata.at("facet:device")).find("llvmpipe"), std::string::npos);
   EXPECT_GT(std::get<double>(metadata.at("facet:render_ms")), 0.0);
@@ -63,7 +63,7 @@ TEST_F(Cli, RendersTheDefaultSceneToExrAndPng) {
   auto info = run_command("oiiotool --info -v " + out.string());
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find(":   64 x   36, 3 channel"), std::string::npos) << info.out;
-  EXPECT_NE(info.out.find("facet:method: \"direct\""), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("facet:method: \"naive\""), std::string::npos) << info.out;
 }
 
 TEST_F(Cli, MalformedJsonIsOneLineError) {

@@ -187,6 +187,27 @@ TEST(DiffractionBrdf, TaylorSumMatchesExactTransformForGrowingHeights) {
     }
 }
 
+// The sign of the transform (B.7, e^{+i k (u x + v y)}): a sawtooth rising along +x has facets whose
+// normals lean toward -x, so at normal incidence the facets mirror light toward -x, i.e. into the
+// order m = +1 (wr.x = -lambda / L) rather than m = -1. With the opposite sign the two would swap.
+// Blazed with a = 250 nm at lambda = 500 nm, period L = 640 nm (4 per patch, 64 samples each): the
+// order powers are sinc^2((phi +- 2 pi)/2) with phi = k w a = -5.10, i.e. 0.88 for m = +1 and 0.0098 for m = -1.
+TEST(DiffractionBrdf, SawtoothSendsLightWhereItsFacetsMirrorIt) {
+  diffraction::Grating g;
+  g.samples = 256;
+  g.sample_nm = 10.0;
+  g.coherence_nm = 2560.0;
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 256; ++x) g.height_nm.push_back(250.0 * (x % 64) / 64.0);
+  const auto t = diffraction::build_spectral_tables(g);
+  const diffraction::ExactTransform exact(g, t);
+  const glm::dvec3 normal(0, 0, 1);
+  const DiffractionQuery plus{normal, direction(-500.0 / 640.0, 0.0), 500.0};
+  const DiffractionQuery minus{normal, direction(500.0 / 640.0, 0.0), 500.0};
+  EXPECT_GT(evaluate_taylor(t, plus).P2, 10 * evaluate_taylor(t, minus).P2);
+  EXPECT_GT(exact.evaluate(plus).P2, 10 * exact.evaluate(minus).P2);
+}
+
 // Swapping light and viewer leaves (u, v, w), G and the half vector unchanged.
 TEST(DiffractionBrdf, IsReciprocal) {
   const auto g = test::grating(

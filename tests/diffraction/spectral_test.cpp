@@ -80,6 +80,10 @@ TEST(Spectral, PeakSpacingResolvesTheNarrowestPeak) {
     const glm::dvec3 a = integrate_xyz(coarse, peak), b = integrate_xyz(fine, peak);
     EXPECT_NEAR(a.y / b.y, 1.0, tol) << centre << " spacing " << h << " s " << s;
   }
+  // The combined choice is at least as fine as either criterion.
+  const auto both = diffraction_wavelength_samples(t, tol);
+  const double spacing = both.lambda_nm[1] - both.lambda_nm[0];
+  EXPECT_LE(spacing, std::min(observer_spacing(tol), peak_spacing(t, kCieLambdaMinNm, tol)) + 1e-12);
 }
 
 }  // namespace

@@ -68,7 +68,7 @@ constexpr double kMinAgreeingFraction = 0.99;
 TEST(DirectPass, GpuMatchesCpuOnAnalyticScene) {
   auto context = test::make_validated_context();
   Scene scene = analytic_scene();
-  Image gpu = gpu::render_direct(*context, scene, 96, 64, nullptr, {}, 32);  // several tiles
+  Image gpu = gpu::render_direct(*context, scene, 96, 64, {}, nullptr, {}, 32);  // several tiles
   Image cpu = cpu::render_direct_cpu(scene, 96, 64);
   Agreement a = compare(gpu, cpu, kTolerance);
   EXPECT_GE(a.within_fraction, kMinAgreeingFraction);

@@ -1,0 +1,90 @@
+// facet reference SCENE -o REF.exr: the CPU reference image (docs/reference.md), to EXR + PNG preview.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/frame_output.hpp"
+#include "common/progress.hpp"
+#include "cpu/reference_renderer.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace facet::cli {
+
+namespace {
+
+struct ReferenceCommandOptions {
+  std::filesystem::path scene;
+  ResolutionOptions resolution;
+  OutputOptions output;
+  int grid = 32;
+  std::int64_t seed = 1;
+  int threads = 0;
+};
+
+// Set by SIGINT/SIGTERM; the renderer polls it between rows and then throws, so no file is written.
+std::atomic<bool> interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
+
+extern "C" void on_interrupt(int) { interrupted.store(true); }
+
+int run_reference(const ReferenceCommandOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scene scene = load_scene(options.scene);
+  const auto [width, height] = options.resolution.resolve(scene.camera);
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+
+  cpu::ReferenceOptions render;
+  render.width = width;
+  render.height = height;
+  render.grid = options.grid;
+  render.seed = static_cast<std::uint64_t>(options.seed);
+  render.threads = options.threads;
+  render.cancel = &interrupted;
+  std::unique_ptr<ProgressBar> progress;
+  render.progress = [&](std::int64_t done, std::int64_t total) {
+    if (!progress) progress = std::make_unique<ProgressBar>("reference", total);
+    progress->update(done);
+  };
+  const Image image = cpu::render_reference(scene, render);
+  if (progress) progress->finish();
+
+  const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ExrMetadata metadata = frame_metadata(scene, "reference", static_cast<std::int64_t>(options.grid) * options.grid,
+                                        "cpu", 0.0, wall_ms);
+  metadata["facet:grid"] = static_cast<std::int64_t>(options.grid);
+  metadata["facet:seed"] = options.seed;
+  metadata["facet:filter"] = std::string("box");
+  write_frame(options.output, image, metadata);
+  const double samples = static_cast<double>(width) * height * options.grid * options.grid;
+  std::cerr << "facet: reference " << width << "x" << height << ", grid " << options.grid << "x" << options.grid
+            << " in " << wall_ms << " ms (" << samples / (wall_ms * 1e3) << " M samples/s) -> "
+            << options.output.path.string() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_reference_command(CLI::App& app, Action& action) {
+  auto* command = app.add_subcommand("reference", "Render the CPU reference image of a scene to an OpenEXR file");
+  auto options = std::make_shared<ReferenceCommandOptions>();
+  command->add_option("scene", options->scene, "Scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("--grid", options->grid, "N: an N x N jittered grid of primary rays per pixel")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  command->add_option("--seed", options->seed, "Seed of the jitter")
+      ->check(CLI::Range(std::int64_t{0}, std::int64_t{2147483647}))
+      ->capture_default_str();
+  command->add_option("--threads", options->threads, "Worker threads (0: all cores)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  add_resolution_options(*command, options->resolution);
+  add_output_options(*command, options->output);
+  command->callback([&action, options] { action = [options] { return run_reference(*options); }; });
+}
+
+}  // namespace facet::cli

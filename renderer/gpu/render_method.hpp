@@ -1,0 +1,23 @@
+// How `facet render --method M` turns sub-pixel detail into a pixel (issue 6):
+//   naive      one ray per pixel, the finest texture level, the colour map per sample
+//   mip        MIP-map the texture, then apply the colour map (the common wrong answer)
+//   colormip   MIP-map the colour-mapped texture (right for static textures)
+//   ss:K       K x K stratified rays per pixel of `naive` (K in 1..16)
+//   filtered   the footprint's Gaussian of texture values integrated against the colour map
+#pragma once
+
+#include <string>
+
+namespace facet::gpu {
+
+struct RenderMethod {
+  enum class Texture { Naive = 0, Mip = 1, Colormip = 2, Filtered = 3 };
+  Texture texture = Texture::Naive;
+  int samples_per_axis = 1;
+
+  // Throws facet::Error naming the known methods for anything else.
+  static RenderMethod parse(const std::string& text);
+  std::string name() const;  // the canonical text, as parse() reads it
+};
+
+}  // namespace facet::gpu

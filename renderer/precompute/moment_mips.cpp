@@ -1,0 +1,126 @@
+#include "precompute/moment_mips.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/error.hpp"
+
+namespace facet::precompute {
+
+namespace {
+
+// Level-0 texels covered by texel i of a level whose texels span `span` level-0 texels, of `size`.
+int coverage(int i, int span, int size) { return std::min((i + 1) * span, size) - i * span; }
+
+int wrap(long long i, int n) { return static_cast<int>(((i % n) + n) % n); }
+
+// The bilinear reconstruction of the periodic field at (x, y) in texel units (centres at i + 1/2).
+double bilinear(const assets::ScalarField& f, double x, double y) {
+  const double sx = x - 0.5, sy = y - 0.5;
+  const double fx0 = std::floor(sx), fy0 = std::floor(sy);
+  const long long i = static_cast<long long>(fx0), j = static_cast<long long>(fy0);
+  const double wx = sx - fx0, wy = sy - fy0;
+  const double top = (1 - wx) * f.wrapped(i, j) + wx * f.wrapped(i + 1, j);
+  const double bottom = (1 - wx) * f.wrapped(i, j + 1) + wx * f.wrapped(i + 1, j + 1);
+  return (1 - wy) * top + wy * bottom;
+}
+
+// Variance of the bilinear reconstruction over the cell [x, x+1] x [y, y+1]. It is bilinear on each
+// quarter of the cell, so t^2 is biquadratic there and a 2x2 Gauss rule per quarter (nodes 1/4 +- 1/(4
+// sqrt 3) and 3/4 +- ... on each axis, equal weights) is exact.
+double within_texel_variance(const assets::ScalarField& f, int x, int y) {
+  const double d = 0.25 / std::sqrt(3.0);
+  const double nodes[4] = {0.25 - d, 0.25 + d, 0.75 - d, 0.75 + d};
+  double samples[16];
+  double mean = 0;
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) mean += samples[b * 4 + a] = bilinear(f, x + nodes[a], y + nodes[b]);
+  mean /= 16;
+  double variance = 0;
+  for (double s : samples) variance += (s - mean) * (s - mean);
+  return variance / 16;
+}
+
+}  // namespace
+
+MomentMips build_moment_mips(int width, int height, int channels, std::vector<double> level0) {
+  if (width < 1 || height < 1 || channels < 1 ||
+      level0.size() != static_cast<std::size_t>(width) * height * channels)
+    throw Error("moment MIP maps: level 0 must hold width * height * channels values");
+  MomentMips mips{channels, {{width, height, 0}}, std::move(level0)};
+  for (int span = 1; mips.levels.back().width > 1 || mips.levels.back().height > 1; span *= 2) {
+    const MomentLevel child = mips.levels.back();
+    const MomentLevel parent{(child.width + 1) / 2, (child.height + 1) / 2, mips.data.size()};
+    mips.levels.push_back(parent);
+    mips.data.resize(mips.data.size() + static_cast<std::size_t>(parent.width) * parent.height * channels);
+    const int level = static_cast<int>(mips.levels.size()) - 1;
+    for (int y = 0; y < parent.height; ++y)
+      for (int x = 0; x < parent.width; ++x) {
+        // Children weighted by the level-0 texels they cover: the parent is their plain mean.
+        double* out = mips.data.data() + parent.offset + (static_cast<std::size_t>(y) * parent.width + x) * channels;
+        double total = 0;
+        for (int cy = 2 * y; cy < std::min(2 * y + 2, child.height); ++cy)
+          for (int cx = 2 * x; cx < std::min(2 * x + 2, child.width); ++cx) {
+            const double weight = static_cast<double>(coverage(cx, span, width)) * coverage(cy, span, height);
+            const double* in = mips.texel(level - 1, cx, cy);
+            for (int c = 0; c < channels; ++c) out[c] += weight * in[c];
+            total += weight;
+          }
+        for (int c = 0; c < channels; ++c) out[c] /= total;
+      }
+  }
+  return mips;
+}
+
+MomentMips scalar_moment_mips(const assets::ScalarField& field) {
+  std::vector<double> level0;
+  level0.reserve(static_cast<std::size_t>(field.width) * field.height * kScalarChannels);
+  for (int y = 0; y < field.height; ++y)
+    for (int x = 0; x < field.width; ++x) {
+      const double t = field.at(x, y);
+      level0.insert(level0.end(), {t, t * t, within_texel_variance(field, x, y)});
+    }
+  return build_moment_mips(field.width, field.height, kScalarChannels, std::move(level0));
+}
+
+MomentMips lean_moment_mips(const assets::ScalarField& heights, double texel_size) {
+  if (!(texel_size > 0.0)) throw Error("LEAN moments: the texel size must be > 0");
+  std::vector<double> level0;
+  level0.reserve(static_cast<std::size_t>(heights.width) * heights.height * kLeanChannels);
+  for (int y = 0; y < heights.height; ++y)
+    for (int x = 0; x < heights.width; ++x) {
+      const double h = heights.at(x, y);
+      const double sx = (heights.wrapped(x + 1, y) - heights.wrapped(x - 1, y)) / (2 * texel_size);
+      const double sy = (heights.wrapped(x, y + 1) - heights.wrapped(x, y - 1)) / (2 * texel_size);
+      level0.insert(level0.end(), {h, h * h, sx, sy, sx * sx, sy * sy, sx * sy});
+    }
+  return build_moment_mips(heights.width, heights.height, kLeanChannels, std::move(level0));
+}
+
+MeanVariance lookup_scalar_moments(const MomentMips& mips, glm::dvec2 uv, double lod) {
+  const int last = static_cast<int>(mips.levels.size()) - 1;
+  const double l = std::isnan(lod) ? 0.0 : std::clamp(lod, 0.0, static_cast<double>(last));
+  const int l0 = std::min(static_cast<int>(l), last);
+  const int l1 = std::min(l0 + 1, last);
+  const double f = l - l0;
+  auto bilinear_level = [&](int level, int channel) {
+    // Texels of level `level` as a regular grid of 2^level level-0 texels (exact when the size is a
+    // multiple of 2^level; otherwise the last, partial texel is treated as full).
+    const MomentLevel& m = mips.levels[static_cast<std::size_t>(level)];
+    const double scale = std::ldexp(1.0, -level);
+    const double u = uv.x - std::floor(uv.x), v = uv.y - std::floor(uv.y);  // period 1; NaN stays NaN
+    const double sx = std::isfinite(u) ? u * mips.levels[0].width * scale - 0.5 : 0.0;
+    const double sy = std::isfinite(v) ? v * mips.levels[0].height * scale - 0.5 : 0.0;
+    const double fx = std::floor(sx), fy = std::floor(sy);
+    const long long i = static_cast<long long>(fx), j = static_cast<long long>(fy);
+    const double wx = sx - fx, wy = sy - fy;
+    auto at = [&](long long x, long long y) { return mips.texel(level, wrap(x, m.width), wrap(y, m.height))[channel]; };
+    return (1 - wy) * ((1 - wx) * at(i, j) + wx * at(i + 1, j)) + wy * ((1 - wx) * at(i, j + 1) + wx * at(i + 1, j + 1));
+  };
+  auto trilinear = [&](int channel) { return (1 - f) * bilinear_level(l0, channel) + f * bilinear_level(l1, channel); };
+  const double mean = trilinear(kScalarMean);
+  const double variance = std::max(trilinear(kScalarSecondMoment) - mean * mean, 0.0) + trilinear(kScalarWithinVariance);
+  return {mean, variance};
+}
+
+}  // namespace facet::precompute

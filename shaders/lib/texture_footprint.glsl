@@ -1,0 +1,46 @@
+// Pixel footprints in texture space (ray differentials) and the MIP level they select.
+#ifndef FACET_TEXTURE_FOOTPRINT_GLSL
+#define FACET_TEXTURE_FOOTPRINT_GLSL
+#include "lib/prelude.glsl"
+
+// The uv offset of a neighbouring pixel's ray o + t d' on the tangent plane through p with normal
+// n, given the surface's uv tangents dp/du and dp/dv at p (least squares on the 2x2 normal
+// equations, exact when dp/du and dp/dv span the tangent plane; Igehy 1999 "Tracing ray
+// differentials", transfer to the plane and projection onto the parameterisation).
+inline real2 uv_differential(real3 o, real3 d_offset, real3 p, real3 n, real3 dpdu, real3 dpdv) {
+  real denom = dot(d_offset, n);
+  if (abs(denom) < real(1e-12)) return real2(real(0), real(0));  // grazing: caller clamps the level
+  real3 dp = o + (dot(p - o, n) / denom) * d_offset - p;
+  real a = dot(dpdu, dpdu);
+  real b = dot(dpdu, dpdv);
+  real c = dot(dpdv, dpdv);
+  real det = a * c - b * b;
+  if (abs(det) < real(1e-30)) return real2(real(0), real(0));
+  real ru = dot(dp, dpdu);
+  real rv = dot(dp, dpdv);
+  return real2(c * ru - b * rv, a * rv - b * ru) / det;
+}
+
+// An anisotropic footprint (axes duv_dx, duv_dy) covered by `taps` isotropic lookups spaced along
+// its major axis, each at the MIP level of the footprint's width across it (the minor axis, or the
+// major axis / taps where max_taps cannot cover the whole elongation): the classic anisotropic
+// filtering scheme (e.g. the EWA-approximating hardware filters). Levels are clamped to the chain.
+struct AnisotropicFootprint {
+  real lod;
+  real taps;
+  real2 major;  // the major axis in uv; tap k of n sits at uv + major ((k + 1/2)/n - 1/2)
+};
+
+inline AnisotropicFootprint anisotropic_footprint(real2 duv_dx, real2 duv_dy, real2 size, real levels, real max_taps) {
+  real length_x = length(duv_dx * size);
+  real length_y = length(duv_dy * size);
+  real major = max(length_x, length_y);
+  real minor = min(length_x, length_y);
+  // Within one texel a single bilinear lookup is exact: no taps to spread.
+  real taps = major <= real(1) ? real(1) : clamp(ceil(major / max(minor, real(1e-6))), real(1), max_taps);
+  real width = max(minor, major / taps);
+  real lod = width > real(1) ? log2(width) : real(0);
+  return AnisotropicFootprint(clamp(lod, real(0), levels - real(1)), taps, length_x >= length_y ? duv_dx : duv_dy);
+}
+
+#endif

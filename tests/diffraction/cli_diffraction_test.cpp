@@ -1,0 +1,65 @@
+// `facet eval diffraction` as scripts see it: the JSON-lines contract, CPU / GPU / exact agreement
+// on a first-order peak (|S| = J_1(k w a), see diffraction_brdf_test.cpp), and errors.
+#include <gtest/gtest.h>
+
+#include <boost/math/special_functions/bessel.hpp>
+#include <cmath>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_command.hpp"
+
+namespace facet {
+namespace {
+
+using test::run_command;
+
+const std::string kFacet = FACET_EXECUTABLE;
+const std::string kGrating =
+    R"('{"type":"sinusoid","period_nm":1300,"amplitude_nm":80,"size_um":26,"samples":320}')";
+
+std::vector<nlohmann::json> parse_lines(const std::string& text) {
+  std::vector<nlohmann::json> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+TEST(EvalDiffractionCli, AnswersGoodLinesAndReportsBadOnes) {
+  const double x_r = 500.0 / 1300.0, z_r = std::sqrt(1 - x_r * x_r);
+  std::ostringstream input;
+  input << R"({"id": "peak", "wi": [0, 0, 1], "wr": [)" << x_r << ", 0, " << z_r << R"(], "lambda_nm": 500})" << "\n"
+        << "not json\n"
+        << R"({"id": 2, "wi": [0, 0, 1], "wr": [0, 0, 1]})" << "\n"
+        << R"({"id": 3, "wi": [0, 0, -1], "wr": [0, 0, 1], "lambda_nm": 500})" << "\n"
+        << R"({"id": 4, "wi": [0, 0, 2], "wr": [0, 0, 1], "lambda_nm": 500})" << "\n"
+        << R"({"id": 5, "wi": [0, 0], "wr": [0, 0, 1], "lambda_nm": 500})" << "\n";
+  const double w = -(1 + z_r), sigma = 26000.0;
+  const double J1 = std::abs(boost::math::cyl_bessel_j(1, 2 * M_PI / 500 * w * 80));
+  for (const char* device : {"cpu", "gpu", "cpu --exact"}) {
+    auto r = run_command(kFacet + " eval diffraction --grating " + kGrating + " --device " + std::string(device), input.str());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto lines = parse_lines(r.out);
+    ASSERT_EQ(lines.size(), 6u);
+    EXPECT_EQ(lines[0]["id"], "peak");
+    const double S = std::sqrt(lines[0]["P2"].get<double>() / (4 * M_PI * sigma * sigma));
+    EXPECT_NEAR(S, J1, 2e-4) << device;  // tolerance 1e-4 times the window weight bound (< 2)
+    EXPECT_GT(lines[0]["brdf"].get<double>(), 0.0);
+    EXPECT_TRUE(lines[1].contains("error"));
+    for (int i = 2; i < 6; ++i) EXPECT_TRUE(lines[i].contains("error")) << device << " line " << i;
+  }
+}
+
+TEST(EvalDiffractionCli, BadGratingAndExactOnGpuFailWithOneLine) {
+  for (const std::string& args : {std::string(R"(--grating '{"type":"sinusoid"}')"), std::string("--grating /nonexistent.json"),
+                                 "--grating " + kGrating + " --device gpu --exact"}) {
+    auto r = run_command(kFacet + " eval diffraction " + args, R"({"wi":[0,0,1],"wr":[0,0,1],"lambda_nm":500})");
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace facet
