@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include <random>
+#include <span>
 #include <vector>
 
 #include "eval_cross_section.spv.h"
@@ -19,6 +20,18 @@ facet::vk::Context& context() {
   return instance;
 }
 
+// Times one eval kernel over `inputs` by its GPU timestamps, after a JIT warm-up dispatch.
+void run_timed(benchmark::State& state, const char* name, std::span<const uint32_t> spirv,
+               const std::vector<EvalRecord>& inputs) {
+  facet::gpu::run_batch_eval(context(), name, spirv, inputs);
+  for (auto _ : state) {
+    facet::gpu::BatchTiming timing;
+    facet::gpu::run_batch_eval(context(), name, spirv, inputs, &timing);
+    state.SetIterationTime(timing.gpu_ms * 1e-3);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(inputs.size()));
+}
+
 // Random slope laws and views over the brief's domain (both sides of the horizon).
 std::vector<EvalRecord> visible_slope_inputs(size_t count) {
   std::mt19937 rng(1);
@@ -33,14 +46,8 @@ std::vector<EvalRecord> visible_slope_inputs(size_t count) {
 }
 
 void BM_GpuVisibleSlope(benchmark::State& state) {
-  const auto inputs = visible_slope_inputs(static_cast<size_t>(state.range(0)));
-  facet::gpu::run_batch_eval(context(), "eval_visible_slope", eval_visible_slope_spv, inputs);  // JIT warm-up
-  for (auto _ : state) {
-    facet::gpu::BatchTiming timing;
-    facet::gpu::run_batch_eval(context(), "eval_visible_slope", eval_visible_slope_spv, inputs, &timing);
-    state.SetIterationTime(timing.gpu_ms * 1e-3);
-  }
-  state.SetItemsProcessed(state.iterations() * state.range(0));
+  run_timed(state, "eval_visible_slope", eval_visible_slope_spv,
+            visible_slope_inputs(static_cast<size_t>(state.range(0))));
 }
 BENCHMARK(BM_GpuVisibleSlope)->Arg(1 << 22)->UseManualTime()->Unit(benchmark::kMillisecond);
 
@@ -54,13 +61,7 @@ void BM_GpuCrossSection(benchmark::State& state) {
     float param = ndf == 2 ? uni(rng) * 0.999f : std::pow(10.0f, -3.0f + 6.0f * uni(rng));
     r = {glm::vec4(ndf, param, 2 * uni(rng) - 1, 0), glm::vec4(0)};
   }
-  facet::gpu::run_batch_eval(context(), "eval_cross_section", eval_cross_section_spv, inputs);  // JIT warm-up
-  for (auto _ : state) {
-    facet::gpu::BatchTiming timing;
-    facet::gpu::run_batch_eval(context(), "eval_cross_section", eval_cross_section_spv, inputs, &timing);
-    state.SetIterationTime(timing.gpu_ms * 1e-3);
-  }
-  state.SetItemsProcessed(state.iterations() * state.range(0));
+  run_timed(state, "eval_cross_section", eval_cross_section_spv, inputs);
 }
 BENCHMARK(BM_GpuCrossSection)
     ->ArgsProduct({{1 << 22}, {0, 1, 2, 3}})

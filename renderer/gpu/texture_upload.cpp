@@ -1,33 +1,26 @@
 #include "gpu/texture_upload.hpp"
 
-#include <algorithm>
+#include "precompute/moment_mips.hpp"
 
 namespace facet::gpu {
 
 namespace {
 
-// Appends a MIP chain built by 2x2 box filtering with wrap-around (the textures are periodic);
-// level l + 1 has ceil(size / 2) texels per side, so an odd side's last texel is averaged with the
-// first one of its row or column. Returns the index of the first level record.
-uint append_box_mips(TextureData& data, std::vector<vec4> level, int width, int height, uint& level_count) {
+// Appends a box-filtered MIP chain (precompute::build_moment_mips) of `channels` (<= 4) values per
+// texel as vec4 texels; returns the index of its first level record.
+uint append_mips(TextureData& data, int width, int height, int channels, std::vector<double> level0) {
+  const precompute::MomentMips mips = precompute::build_moment_mips(width, height, channels, std::move(level0));
   const uint first = static_cast<uint>(data.levels.size());
-  level_count = 0;
-  while (true) {
-    data.levels.push_back({uvec4(data.texels.size(), width, height, 0)});
-    data.texels.insert(data.texels.end(), level.begin(), level.end());
-    ++level_count;
-    if (width == 1 && height == 1) break;
-    const int w2 = (width + 1) / 2, h2 = (height + 1) / 2;
-    std::vector<vec4> next(static_cast<size_t>(w2) * h2);
-    for (int j = 0; j < h2; ++j)
-      for (int i = 0; i < w2; ++i) {
-        auto at = [&](int x, int y) { return level[static_cast<size_t>(y % height) * width + x % width]; };
-        next[static_cast<size_t>(j) * w2 + i] =
-            0.25f * (at(2 * i, 2 * j) + at(2 * i + 1, 2 * j) + at(2 * i, 2 * j + 1) + at(2 * i + 1, 2 * j + 1));
+  for (int l = 0; l < static_cast<int>(mips.levels.size()); ++l) {
+    const precompute::MomentLevel& level = mips.levels[l];
+    data.levels.push_back({uvec4(data.texels.size(), level.width, level.height, 0)});
+    for (int y = 0; y < level.height; ++y)
+      for (int x = 0; x < level.width; ++x) {
+        const double* texel = mips.texel(l, x, y);
+        vec4 v(0.0f);
+        for (int c = 0; c < channels; ++c) v[c] = static_cast<float>(texel[c]);
+        data.texels.push_back(v);
       }
-    level = std::move(next);
-    width = w2;
-    height = h2;
   }
   return first;
 }
@@ -36,15 +29,17 @@ uint append_box_mips(TextureData& data, std::vector<vec4> level, int width, int 
 
 uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material) {
   const assets::ScalarField& field = *material.texture;
-  std::vector<vec4> moments(field.values.size()), colours(field.values.size());
+  std::vector<double> moments(2 * field.values.size()), colours(3 * field.values.size());
   for (size_t i = 0; i < field.values.size(); ++i) {
     const double t = field.values[i];
-    moments[i] = vec4(static_cast<float>(t), static_cast<float>(t * t), 0.0f, 0.0f);
-    colours[i] = vec4(glm::vec3(material.colormap.at(t)), 0.0f);
+    moments[2 * i] = t;
+    moments[2 * i + 1] = t * t;
+    const glm::dvec3 c = material.colormap.at(t);
+    for (int k = 0; k < 3; ++k) colours[3 * i + k] = c[k];
   }
-  uint moment_levels = 0, colour_levels = 0;
-  const uint first_moment = append_box_mips(data, std::move(moments), field.width, field.height, moment_levels);
-  const uint first_colour = append_box_mips(data, std::move(colours), field.width, field.height, colour_levels);
+  const uint first_moment = append_mips(data, field.width, field.height, 2, std::move(moments));
+  const uint moment_levels = static_cast<uint>(data.levels.size()) - first_moment;
+  const uint first_colour = append_mips(data, field.width, field.height, 3, std::move(colours));
 
   const Colormap& map = material.colormap;
   data.colormaps.push_back({uvec4(data.colormap_points.size(), map.positions().size(),

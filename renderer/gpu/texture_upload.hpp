@@ -1,5 +1,6 @@
 // The colour-mapped textures of a scene as GPU data: per texture a MIP chain of moments
-// (E[t], E[t^2]) and a MIP chain of the colour-mapped texture (for the `colormip` baseline), and
+// (E[t], E[t^2]) and a MIP chain of the colour-mapped texture (for the `colormip` baseline), both
+// box-filtered by precompute::build_moment_mips, and
 // the colour maps as control points (layouts in shaders/layout/scene_layout.glsl).
 #pragma once
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/error.hpp"
+#include "kernels/shared.hpp"
 
 namespace facet::precompute {
 
@@ -97,13 +98,16 @@ MomentMips lean_moment_mips(const assets::ScalarField& heights, double texel_siz
   return build_moment_mips(heights.width, heights.height, kLeanChannels, std::move(level0));
 }
 
-MeanVariance lookup_scalar_moments(const MomentMips& mips, glm::dvec2 uv, double lod) {
+namespace {
+
+// The trilinear interpolation of the three scalar channels (E[t], E[t^2], within-texel variance).
+glm::dvec3 trilinear_scalar_channels(const MomentMips& mips, glm::dvec2 uv, double lod) {
   const int last = static_cast<int>(mips.levels.size()) - 1;
   const double l = std::isnan(lod) ? 0.0 : std::clamp(lod, 0.0, static_cast<double>(last));
   const int l0 = std::min(static_cast<int>(l), last);
   const int l1 = std::min(l0 + 1, last);
   const double f = l - l0;
-  auto bilinear_level = [&](int level, int channel) {
+  auto bilinear_level = [&](int level) {
     // Texels of level `level` as a regular grid of 2^level level-0 texels (exact when the size is a
     // multiple of 2^level; otherwise the last, partial texel is treated as full).
     const MomentLevel& m = mips.levels[static_cast<std::size_t>(level)];
@@ -114,13 +118,37 @@ MeanVariance lookup_scalar_moments(const MomentMips& mips, glm::dvec2 uv, double
     const double fx = std::floor(sx), fy = std::floor(sy);
     const long long i = static_cast<long long>(fx), j = static_cast<long long>(fy);
     const double wx = sx - fx, wy = sy - fy;
-    auto at = [&](long long x, long long y) { return mips.texel(level, wrap(x, m.width), wrap(y, m.height))[channel]; };
+    auto at = [&](long long x, long long y) {
+      const double* t = mips.texel(level, wrap(x, m.width), wrap(y, m.height));
+      return glm::dvec3(t[kScalarMean], t[kScalarSecondMoment], t[kScalarWithinVariance]);
+    };
     return (1 - wy) * ((1 - wx) * at(i, j) + wx * at(i + 1, j)) + wy * ((1 - wx) * at(i, j + 1) + wx * at(i + 1, j + 1));
   };
-  auto trilinear = [&](int channel) { return (1 - f) * bilinear_level(l0, channel) + f * bilinear_level(l1, channel); };
-  const double mean = trilinear(kScalarMean);
-  const double variance = std::max(trilinear(kScalarSecondMoment) - mean * mean, 0.0) + trilinear(kScalarWithinVariance);
-  return {mean, variance};
+  return (1 - f) * bilinear_level(l0) + f * bilinear_level(l1);
+}
+
+// Mean and variance from (E[t], E[t^2], within-texel variance): E[t^2] - E[t]^2 of the samples plus
+// the variance inside the texels.
+MeanVariance to_mean_variance(glm::dvec3 channels) {
+  return {channels.x, std::max(channels.y - channels.x * channels.x, 0.0) + channels.z};
+}
+
+}  // namespace
+
+MeanVariance lookup_scalar_moments(const MomentMips& mips, glm::dvec2 uv, double lod) {
+  return to_mean_variance(trilinear_scalar_channels(mips, uv, lod));
+}
+
+MeanVariance lookup_scalar_moments_anisotropic(const MomentMips& mips, glm::dvec2 uv, glm::dvec2 duv_dx,
+                                               glm::dvec2 duv_dy, int max_taps) {
+  const glm::dvec2 size(mips.levels[0].width, mips.levels[0].height);
+  const kernels::f64::AnisotropicFootprint footprint = kernels::f64::anisotropic_footprint(
+      duv_dx, duv_dy, size, static_cast<double>(mips.levels.size()), static_cast<double>(std::max(max_taps, 1)));
+  const int taps = static_cast<int>(footprint.taps);
+  glm::dvec3 sum(0.0);
+  for (int k = 0; k < taps; ++k)
+    sum += trilinear_scalar_channels(mips, uv + footprint.major * ((k + 0.5) / taps - 0.5), footprint.lod);
+  return to_mean_variance(sum / static_cast<double>(taps));
 }
 
 }  // namespace facet::precompute

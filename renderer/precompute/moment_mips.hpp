@@ -57,4 +57,10 @@ struct MeanVariance {
 // plus the interpolated within-texel variance.
 MeanVariance lookup_scalar_moments(const MomentMips& mips, glm::dvec2 uv, double lod);
 
+// The same over an anisotropic footprint with uv axes duv_dx, duv_dy: the taps and level of
+// anisotropic_footprint (shaders/lib/texture_footprint.glsl, as the GPU), their moments combined as a
+// mixture (mean of the taps' E[t], E[t^2] and within-texel variances).
+MeanVariance lookup_scalar_moments_anisotropic(const MomentMips& mips, glm::dvec2 uv, glm::dvec2 duv_dx,
+                                               glm::dvec2 duv_dy, int max_taps);
+
 }  // namespace facet::precompute

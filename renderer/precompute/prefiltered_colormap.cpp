@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/parallel_for.h>
+
 #include "common/error.hpp"
 #include "precompute/colormap_filter.hpp"
 
@@ -25,16 +27,18 @@ struct Probed {
 
 // The bilinear error is largest inside the cells: probe each cell at its centre and at the midpoints of
 // its edges, where one of the two interpolations is exact at the nodes.
-// Cells below sigma_floor are not probed (see PrefilteredColormapOptions::sigma_floor).
+// Cells below sigma_floor are not probed (see PrefilteredColormapOptions::sigma_floor). Rows in parallel.
 Probed probe(const Colormap& map, const PrefilteredColormap& table, double sigma_floor) {
   const k64::ColormapTableGrid& g = table.grid;
-  Probed p;
-  for (int j = 0; j < g.sigma_count; ++j)
+  std::vector<Probed> rows(static_cast<std::size_t>(g.sigma_count));
+  tbb::parallel_for(0, g.sigma_count, [&](int j) {
+    Probed& p = rows[static_cast<std::size_t>(j)];
+    const double sigma = k64::colormap_table_sigma(g, j);
+    if (sigma < sigma_floor) return;
+    const double sigma_mid = j + 1 < g.sigma_count ? 0.5 * (sigma + k64::colormap_table_sigma(g, j + 1)) : sigma;
     for (int i = 0; i < g.mu_count; ++i) {
-      const double mu = k64::colormap_table_mu(g, i), sigma = k64::colormap_table_sigma(g, j);
-      if (sigma < sigma_floor) continue;
+      const double mu = k64::colormap_table_mu(g, i);
       const double mu_mid = i + 1 < g.mu_count ? 0.5 * (mu + k64::colormap_table_mu(g, i + 1)) : mu;
-      const double sigma_mid = j + 1 < g.sigma_count ? 0.5 * (sigma + k64::colormap_table_sigma(g, j + 1)) : sigma;
       auto error = [&](double m, double s) {
         return max_channel_difference(table.lookup(m, s), filtered_colormap_exact(map, m, s));
       };
@@ -42,15 +46,23 @@ Probed probe(const Colormap& map, const PrefilteredColormap& table, double sigma
       if (j + 1 < g.sigma_count) p.error_sigma = std::max(p.error_sigma, error(mu, sigma_mid));
       if (i + 1 < g.mu_count && j + 1 < g.sigma_count) p.error_centre = std::max(p.error_centre, error(mu_mid, sigma_mid));
     }
-  return p;
+  });
+  Probed all;
+  for (const Probed& p : rows) {
+    all.error_mu = std::max(all.error_mu, p.error_mu);
+    all.error_sigma = std::max(all.error_sigma, p.error_sigma);
+    all.error_centre = std::max(all.error_centre, p.error_centre);
+  }
+  return all;
 }
 
 PrefilteredColormap tabulate(const Colormap& map, k64::ColormapTableGrid grid) {
   PrefilteredColormap table{grid, std::vector<glm::dvec3>(static_cast<std::size_t>(grid.mu_count) * grid.sigma_count), 0.0};
-  for (int j = 0; j < grid.sigma_count; ++j)
+  tbb::parallel_for(0, grid.sigma_count, [&](int j) {
     for (int i = 0; i < grid.mu_count; ++i)
       table.values[k64::colormap_table_index(grid, i, j)] =
           filtered_colormap_exact(map, k64::colormap_table_mu(grid, i), k64::colormap_table_sigma(grid, j));
+  });
   return table;
 }
 

@@ -10,6 +10,21 @@ namespace facet::vk {
 namespace {
 constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkImageSubresourceRange kColour{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+
+void record_transition(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
+                       VkAccessFlags src_access, VkAccessFlags dst_access, VkPipelineStageFlags src_stage,
+                       VkPipelineStageFlags dst_stage) {
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcAccessMask = src_access;
+  barrier.dstAccessMask = dst_access;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = kColour;
+  vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
 }  // namespace
 
 StorageImage::StorageImage(Context& context, uint32_t width, uint32_t height)
@@ -46,18 +61,9 @@ StorageImage::StorageImage(Context& context, uint32_t width, uint32_t height)
     check(vkCreateImageView(device, &view, nullptr, &view_), "vkCreateImageView");
     // UNDEFINED -> GENERAL, the layout shaders use; copies move it to a transfer layout and back.
     context.submit_and_wait([&](VkCommandBuffer cmd) {
-      VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-      barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
-                              VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-      barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-      barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-      barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.image = image_;
-      barrier.subresourceRange = kColour;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
-                           nullptr, 1, &barrier);
+      record_transition(cmd, image_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0,
+                        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
     });
   } catch (...) {
     if (view_) vkDestroyImageView(device, view_, nullptr);
@@ -80,21 +86,8 @@ void StorageImage::copy(bool to_image, VkBuffer staging) const {
   context_->submit_and_wait([&](VkCommandBuffer cmd) {
     // GENERAL -> the transfer's optimal layout -> GENERAL again, with the copy's writes made
     // visible to later shaders (upload) or to the host (download).
-    auto transition = [&](VkImageLayout from, VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access,
-                          VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage) {
-      VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-      barrier.srcAccessMask = src_access;
-      barrier.dstAccessMask = dst_access;
-      barrier.oldLayout = from;
-      barrier.newLayout = to;
-      barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.image = image_;
-      barrier.subresourceRange = kColour;
-      vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
-    };
     const VkAccessFlags transfer_access = to_image ? VK_ACCESS_TRANSFER_WRITE_BIT : VK_ACCESS_TRANSFER_READ_BIT;
-    transition(VK_IMAGE_LAYOUT_GENERAL, transfer_layout, VK_ACCESS_SHADER_WRITE_BIT, transfer_access,
+    record_transition(cmd, image_, VK_IMAGE_LAYOUT_GENERAL, transfer_layout, VK_ACCESS_SHADER_WRITE_BIT, transfer_access,
                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
@@ -103,7 +96,7 @@ void StorageImage::copy(bool to_image, VkBuffer staging) const {
       vkCmdCopyBufferToImage(cmd, staging, image_, transfer_layout, 1, &region);
     else
       vkCmdCopyImageToBuffer(cmd, image_, transfer_layout, staging, 1, &region);
-    transition(transfer_layout, VK_IMAGE_LAYOUT_GENERAL, transfer_access,
+    record_transition(cmd, image_, transfer_layout, VK_IMAGE_LAYOUT_GENERAL, transfer_access,
                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT);
   });

@@ -13,7 +13,7 @@
 #include <limits>
 
 #include "common/error.hpp"
-#include "run_command.hpp"
+#include "support/run_command.hpp"
 #include "temp_dir.hpp"
 
 namespace facet {
@@ -268,23 +268,23 @@ TEST(ExrIo, OpenImageIoReadsMetadataAndPixels) {
       {{"facet:scene", std::string("cornell-box v1")}, {"facet:spp", std::int64_t{64}}, {"facet:render_ms", 12.5}},
       ExrPixelType::Half);
   const auto info = test::run_command("oiiotool --info -v " + (dir / "a.exr").string());
-  ASSERT_EQ(info.status, 0) << info.output;
-  EXPECT_NE(info.output.find("facet:scene: \"cornell-box v1\""), std::string::npos) << info.output;
-  EXPECT_NE(info.output.find("facet:spp: 64"), std::string::npos) << info.output;
-  EXPECT_NE(info.output.find("facet:render_ms: 12.5"), std::string::npos) << info.output;
-  EXPECT_NE(info.output.find("9 x    7, 3 channel, half"), std::string::npos) << info.output;
+  ASSERT_EQ(info.exit_code, 0) << info.out;
+  EXPECT_NE(info.out.find("facet:scene: \"cornell-box v1\""), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("facet:spp: 64"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("facet:render_ms: 12.5"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("9 x    7, 3 channel, half"), std::string::npos) << info.out;
 
   // Same pixels, other metadata and a float file: idiff compares pixels only and must pass exactly.
   Image halved = image;
   for (float& v : halved.rgb) v = round_to_half(v);
   write_exr(dir / "b.exr", halved, {{"facet:scene", std::string("other")}}, ExrPixelType::Float);
   const auto same = test::run_command("idiff -fail 0 " + (dir / "a.exr").string() + " " + (dir / "b.exr").string());
-  EXPECT_EQ(same.status, 0) << same.output;
+  EXPECT_EQ(same.exit_code, 0) << same.out;
   // And it must notice one pixel changed by 1e-3.
   halved.rgb[40] += 1e-3f;
   write_exr(dir / "c.exr", halved, {}, ExrPixelType::Float);
   const auto changed = test::run_command("idiff " + (dir / "a.exr").string() + " " + (dir / "c.exr").string());
-  EXPECT_NE(changed.status, 0) << changed.output;
+  EXPECT_NE(changed.exit_code, 0) << changed.out;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "common/error.hpp"
+#include "image/test_images.hpp"
 
 namespace facet {
 namespace {
@@ -53,13 +54,7 @@ TEST(Flip, ConstantGreysMatchHandComputation) {
   EXPECT_NEAR(flip(Image(12, 12, glm::vec3(5.0f)), Image(12, 12, glm::vec3(-2.0f))), redistributed(100.0), 1e-5);
 }
 
-Image noisy(const Image& base, float amplitude, unsigned seed) {
-  Image image = base;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> noise(-amplitude, amplitude);
-  for (float& v : image.rgb) v += noise(rng);
-  return image;
-}
+using test::noisy;
 
 TEST(Flip, SymmetricBoundedAndMonotoneInNoise) {
   Image base(40, 30);

@@ -12,7 +12,7 @@
 #include "common/error.hpp"
 #include "image/exr_io.hpp"
 #include "image/srgb.hpp"
-#include "run_command.hpp"
+#include "support/run_command.hpp"
 #include "temp_dir.hpp"
 
 namespace facet {
@@ -73,16 +73,16 @@ TEST(PngIo, PreviewMatchesOiiotoolColourConversion) {
   write_png_preview(dir / "ours.png", image);
   const auto convert = test::run_command("oiiotool " + (dir / "linear.exr").string() +
                                          " --colorconvert linear sRGB -d uint8 -o " + (dir / "theirs.png").string());
-  ASSERT_EQ(convert.status, 0) << convert.output;
+  ASSERT_EQ(convert.exit_code, 0) << convert.out;
   // OIIO rounds through its own float path; one code (1/255) is the most two correct encoders may differ.
   const auto diff =
       test::run_command("idiff -fail 0.004 " + (dir / "ours.png").string() + " " + (dir / "theirs.png").string());
-  EXPECT_EQ(diff.status, 0) << diff.output;
+  EXPECT_EQ(diff.exit_code, 0) << diff.out;
   // The same comparison must fail for a preview one stop too bright (the check can fail).
   write_png_preview(dir / "bright.png", image, 1.0);
   const auto wrong =
       test::run_command("idiff -fail 0.004 " + (dir / "bright.png").string() + " " + (dir / "theirs.png").string());
-  EXPECT_NE(wrong.status, 0) << wrong.output;
+  EXPECT_NE(wrong.exit_code, 0) << wrong.out;
 }
 
 TEST(PngIo, Rgb8RoundTripIsExact) {
@@ -112,7 +112,7 @@ void expect_oiiotool_codes_read_back(const std::string& format, int max_code, co
   write_exr(dir / "ramp.exr", image, {}, ExrPixelType::Float);
   const auto made = test::run_command("oiiotool " + (dir / "ramp.exr").string() + " --ch " + channels + " -d " +
                                       format + " -o " + (dir / "ramp.png").string());
-  ASSERT_EQ(made.status, 0) << made.output;
+  ASSERT_EQ(made.exit_code, 0) << made.out;
   const PngImage png = read_png(dir / "ramp.png");
   ASSERT_EQ(png.channels, expected_channels);
   EXPECT_EQ(png.bit_depth, max_code == 65535 ? 16 : 8);

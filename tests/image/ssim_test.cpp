@@ -8,6 +8,7 @@
 #include <random>
 
 #include "common/error.hpp"
+#include "image/test_images.hpp"
 
 namespace facet {
 namespace {
@@ -101,13 +102,7 @@ TEST(Ssim, ImpulseRevealsTheGaussianWindow) {
     }
 }
 
-Image noisy(const Image& base, float amplitude, unsigned seed) {
-  Image image = base;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> noise(-amplitude, amplitude);
-  for (float& v : image.rgb) v += noise(rng);
-  return image;
-}
+using test::noisy;
 
 TEST(Ssim, IdentitySymmetryAndMonotoneInNoise) {
   Image base(48, 32);
