@@ -299,57 +299,68 @@ double HeightField::search(const LocalRay& r, bool any_hit) const {
     stack[stack_size++] = root;
   }
 
+  // The nearest child is descended into directly: the rest are pushed far to near, so the order
+  // of visits is that of a plain pop-the-nearest traversal, without its push/pop of every node.
   while (stack_size > 0) {
     Node n = stack[--stack_size];
-    if (n.t_enter > best) continue;
-    if (n.level == 0) {
-      double t = cell_hit(r, n.tile_x, n.tile_y, n.i, n.j, t_lo, best);
-      if (t <= best) {
-        best = found = t;
-        if (any_hit) return t;
+    for (;;) {
+      if (n.t_enter > best) break;
+      if (n.level == 0) {
+        double t = cell_hit(r, n.tile_x, n.tile_y, n.i, n.j, t_lo, best);
+        if (t <= best) {
+          best = found = t;
+          if (any_hit) return t;
+        }
+        break;
       }
-      continue;
+      Extent e = extent(n);
+      Node children[4];
+      int n_children = 0;
+      // Each axis splits once: the halves are shared by the two children on either side.
+      const Interval halves_x[2] = {half_interval(n.tx, r.o.x, r.d.x, r.inv_d.x, e.x_lo, e.x_mid, e.x_hi, 0),
+                                    half_interval(n.tx, r.o.x, r.d.x, r.inv_d.x, e.x_lo, e.x_mid, e.x_hi, 1)};
+      const Interval halves_y[2] = {half_interval(n.ty, r.o.y, r.d.y, r.inv_d.y, e.y_lo, e.y_mid, e.y_hi, 0),
+                                    half_interval(n.ty, r.o.y, r.d.y, r.inv_d.y, e.y_lo, e.y_mid, e.y_hi, 1)};
+      for (int b = 0; b < 2; ++b)
+        for (int a = 0; a < 2; ++a) {
+          // The ray must cross the child's footprint before its height bounds are worth loading.
+          const Interval tx = halves_x[a], ty = halves_y[b];
+          if (!(std::max({tx.lo, ty.lo, t_lo}) <= std::min({tx.hi, ty.hi, best}))) continue;
+          Node child{n.level - 1, 2 * n.i + a, 2 * n.j + b, n.tile_x, n.tile_y, tx, ty, 0.0};
+          double z_min, z_max;
+          if (n.level > top) {
+            int g = child.level - top;  // tiles per child group, as a power of two
+            if ((static_cast<std::int64_t>(child.i) << g) >= tiles_x_ ||
+                (static_cast<std::int64_t>(child.j) << g) >= tiles_y_)
+              continue;
+            if (g == 0) child = {top, 0, 0, child.i, child.j, tx, ty, 0.0};
+            z_min = range_.min;
+            z_max = range_.max;
+          } else {  // padding entries are empty (min > max) and fail the z test
+            const Level& level = mip_[static_cast<std::size_t>(child.level)];
+            const Bounds& z = level.bounds[level.index(2 * n.i + a, 2 * n.j + b)];
+            z_min = z.min;
+            z_max = z.max;
+          }
+          Interval tz = slab(r.o.z, r.d.z, r.inv_d.z, z_min - margin_z_, z_max + margin_z_);
+          child.t_enter = std::max({tx.lo, ty.lo, tz.lo, t_lo});
+          if (!(child.t_enter <= std::min({tx.hi, ty.hi, tz.hi, best}))) continue;
+          // Insertion into `children`, kept sorted far to near (at most 4 entries).
+          int k = n_children++;
+          for (; k > 0 && children[k - 1].t_enter < child.t_enter; --k) children[k] = children[k - 1];
+          children[k] = child;
+          // Start loading what the child's own expansion reads: incoherent rays miss the cache there.
+          if (child.level > 0 && child.level <= top) {
+            const Level& below = mip_[static_cast<std::size_t>(child.level - 1)];
+            __builtin_prefetch(&below.bounds[below.index(2 * child.i, 2 * child.j)]);
+          } else if (child.level == 0) {
+            __builtin_prefetch(&z_[static_cast<std::size_t>(child.j) * width_ + child.i]);
+          }
+        }
+      if (n_children == 0) break;
+      for (int k = 0; k + 1 < n_children; ++k) stack[stack_size++] = children[k];
+      n = children[n_children - 1];
     }
-    Extent e = extent(n);
-    Node children[4];
-    int n_children = 0;
-    for (int b = 0; b < 2; ++b)
-      for (int a = 0; a < 2; ++a) {
-        Node child{n.level - 1, 2 * n.i + a, 2 * n.j + b, n.tile_x, n.tile_y, {}, {}, 0.0};
-        double z_min, z_max;
-        if (n.level > top) {
-          int g = child.level - top;  // tiles per child group, as a power of two
-          if ((static_cast<std::int64_t>(child.i) << g) >= tiles_x_ ||
-              (static_cast<std::int64_t>(child.j) << g) >= tiles_y_)
-            continue;
-          if (g == 0) child = {top, 0, 0, child.i, child.j, {}, {}, 0.0};
-          z_min = range_.min;
-          z_max = range_.max;
-        } else {  // padding entries are empty (min > max) and fail the z test
-          const Level& level = mip_[static_cast<std::size_t>(child.level)];
-          const Bounds& z = level.bounds[level.index(2 * n.i + a, 2 * n.j + b)];
-          z_min = z.min;
-          z_max = z.max;
-        }
-        child.tx = half_interval(n.tx, r.o.x, r.d.x, r.inv_d.x, e.x_lo, e.x_mid, e.x_hi, a);
-        child.ty = half_interval(n.ty, r.o.y, r.d.y, r.inv_d.y, e.y_lo, e.y_mid, e.y_hi, b);
-        Interval tz = slab(r.o.z, r.d.z, r.inv_d.z, z_min - margin_z_, z_max + margin_z_);
-        child.t_enter = std::max({child.tx.lo, child.ty.lo, tz.lo, t_lo});
-        if (!(child.t_enter <= std::min({child.tx.hi, child.ty.hi, tz.hi, best}))) continue;
-        // Insertion into `children`, kept sorted far to near (at most 4 entries).
-        int k = n_children++;
-        for (; k > 0 && children[k - 1].t_enter < child.t_enter; --k) children[k] = children[k - 1];
-        children[k] = child;
-        // Start loading what the child's own expansion reads: incoherent rays miss the cache there.
-        if (child.level > 0 && child.level <= top) {
-          const Level& below = mip_[static_cast<std::size_t>(child.level - 1)];
-          __builtin_prefetch(&below.bounds[below.index(2 * child.i, 2 * child.j)]);
-        } else if (child.level == 0) {
-          __builtin_prefetch(&z_[static_cast<std::size_t>(child.j) * width_ + child.i]);
-        }
-      }
-    // The farthest is pushed first, so the nearest is popped next.
-    for (int k = 0; k < n_children; ++k) stack[stack_size++] = children[k];
   }
   return found;
 }

@@ -2,7 +2,11 @@
 // plane keys they rely on; every invalid input is one facet::Error line naming file and key.
 #include <gtest/gtest.h>
 
+#include <png.h>
+
 #include <cmath>
+#include <cstdio>
+#include <cstdint>
 #include <limits>
 
 #include "common/error.hpp"
@@ -119,6 +123,59 @@ TEST(SubpixelMaterials, ExrAndPngSources) {
   m["texture"] = {{"file", "rgb.png"}};
   EXPECT_EQ(error_of(scene_with(m, kSphere), dir / "x.json"),
             file + ": materials.m.texture.file: " + (dir / "rgb.png").string() + ": a scalar texture must be a grey PNG");
+}
+
+// A 16-bit grey PNG written here with libpng, samples stored big-endian as the PNG format requires
+// (written as explicit high/low bytes, independent of the host). 255, 256 and 0x1234 each change
+// if the reader swapped the two bytes (to 65280, 1, 0x3412); 65535 must load as exactly 1.
+void write_png_grey16(const std::filesystem::path& path, int width, int height, const std::vector<std::uint16_t>& v) {
+  std::FILE* file = std::fopen(path.string().c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  ASSERT_TRUE(png && info);
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    std::fclose(file);
+    FAIL() << "libpng failed writing " << path;
+  }
+  png_init_io(png, file);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 16, PNG_COLOR_TYPE_GRAY,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  std::vector<png_byte> row(static_cast<std::size_t>(width) * 2);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::uint16_t s = v[static_cast<std::size_t>(y) * width + x];
+      row[2 * static_cast<std::size_t>(x)] = static_cast<png_byte>(s >> 8);
+      row[2 * static_cast<std::size_t>(x) + 1] = static_cast<png_byte>(s & 0xFF);
+    }
+    png_write_row(png, row.data());
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  ASSERT_EQ(std::fclose(file), 0);
+}
+
+TEST(SubpixelMaterials, Grey16PngSourceKeepsItsByteOrder) {
+  const auto dir = test::scratch_dir("subpixel_grey16");
+  const std::vector<std::uint16_t> codes{0, 255, 256, 65535, 0x1234, 1};
+  write_png_grey16(dir / "grey16.png", 3, 2, codes);
+  Json m = kNoiseTexture;
+  m["texture"] = {{"file", "grey16.png"}};
+  const Scene s = parse_scene(scene_with(m, kSphere), dir / "x.json");
+  const auto& t = *std::get<ColormapTextureMaterial>(s.materials[0]).texture;
+  ASSERT_EQ(t.width, 3);
+  ASSERT_EQ(t.height, 2);
+  ASSERT_EQ(t.values.size(), codes.size());
+  for (std::size_t k = 0; k < codes.size(); ++k) {
+    // The reader keeps float samples (PngImage::values): code / 65535 to float rounding, 2^-24
+    // relative. Adjacent codes differ by 1/65535 ≈ 1.5e-5, far above that tolerance.
+    const double expected = codes[k] / 65535.0;
+    EXPECT_NEAR(t.values[k], expected, 0x1p-24 * expected) << "texel " << k << ", code " << codes[k];
+  }
+  EXPECT_EQ(t.values[3], 1.0);
+  EXPECT_EQ(t.values[0], 0.0);
 }
 
 struct Case {
