@@ -41,4 +41,16 @@ inline real ndf_rng_uniform(NdfRng r) {
   return real(w >> 8u) * real(5.9604644775390625e-8);
 }
 
+// The next two uniforms of the stream (a rejection sampler's fresh proposal); advances it twice.
+struct NdfRngPair {
+  NdfRng rng;
+  real2 xi;
+};
+
+inline NdfRngPair ndf_rng_next_pair(NdfRng r) {
+  NdfRng a = ndf_rng_next(r);
+  NdfRng b = ndf_rng_next(a);
+  return NdfRngPair(b, real2(ndf_rng_uniform(a), ndf_rng_uniform(b)));
+}
+
 #endif

@@ -74,10 +74,9 @@ inline real3 ndf_kk_sample_visible(real3 wi, real b_in, real2 u) {
     rng = ndf_rng_next(rng);
     real accept = ndf_rng_uniform(rng);
     if (accept < dot(m, wi)) break;
-    rng = ndf_rng_next(rng);
-    xi.x = ndf_rng_uniform(rng);
-    rng = ndf_rng_next(rng);
-    xi.y = ndf_rng_uniform(rng);
+    NdfRngPair next = ndf_rng_next_pair(rng);
+    rng = next.rng;
+    xi = next.xi;
   }
   return m;
 }

@@ -182,10 +182,9 @@ inline real3 ndf_sg_sample_visible(real3 wi, real alpha, real2 u) {
     }
     rng = ndf_rng_next(rng);
     if (ndf_rng_uniform(rng) < accept_probability) break;
-    rng = ndf_rng_next(rng);
-    xi.x = ndf_rng_uniform(rng);
-    rng = ndf_rng_next(rng);
-    xi.y = ndf_rng_uniform(rng);
+    NdfRngPair next = ndf_rng_next_pair(rng);
+    rng = next.rng;
+    xi = next.xi;
   }
   return m;
 }
