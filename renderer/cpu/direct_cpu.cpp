@@ -1,12 +1,12 @@
 #include "cpu/direct_cpu.hpp"
 
 #include <cmath>
-#include <type_traits>
 #include <variant>
 
 #include <tbb/parallel_for.h>
 
 #include "common/error.hpp"
+#include "cpu/material_shading.hpp"
 #include "cpu/ray_caster.hpp"
 #include "kernels/shared.hpp"
 #include "scene/camera_frame.hpp"
@@ -39,18 +39,7 @@ Image render_direct_cpu(const Scene& scene, int width, int height) {
         glm::dvec3 origin = hit->position + n * (1e-4 * std::max(1.0, glm::length(hit->position)));
         double visibility =
             glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;
-        color = std::visit(
-            [&](const auto& m) {
-              using M = std::decay_t<decltype(m)>;
-              if constexpr (std::is_same_v<M, LambertMaterial>)
-                return k::lambert_radiance(m.albedo, n, l, scene.light.irradiance, visibility, scene.ambient);
-              else if constexpr (!std::is_same_v<M, MicroflakeMaterial>)
-                return scene.background;  // refused above
-              else
-                return k::microflake_radiance(static_cast<int>(m.ndf), m.param, m.albedo, n, -d, l,
-                                              scene.light.irradiance, visibility, scene.ambient);
-            },
-            scene.materials[hit->material]);
+        color = shade_macro_surface(scene, scene.materials[hit->material], n, -d, hit->uv, visibility);
       }
       image.set(x, y, glm::vec3(color));
     }
