@@ -1,5 +1,4 @@
 // facet compare A.exr B.exr: error metrics of A against the reference B, and an error heat map.
-#include <cmath>
 #include <filesystem>
 #include <algorithm>
 #include <iostream>
@@ -10,9 +9,9 @@
 #include "cli/commands.hpp"
 #include "image/exr_io.hpp"
 #include "image/flip.hpp"
+#include "image/image_comparison.hpp"
 #include "image/heatmap.hpp"
 #include "image/metrics.hpp"
-#include "image/ssim.hpp"
 
 namespace facet::cli {
 
@@ -27,25 +26,12 @@ struct CompareOptions {
   bool json = false;
 };
 
-// JSON has no infinity: a metric that is infinite (PSNR of identical images) or undefined
-// (SSIM of an image smaller than its window) is written as null.
-nlohmann::json number_or_null(double value) { return std::isfinite(value) ? nlohmann::json(value) : nullptr; }
-
 int run_compare(const CompareOptions& options) {
   Image test = read_exr(options.test);
   Image reference = read_exr(options.reference);
-  check_comparable(test, reference);
-  const bool ssim_defined = test.width >= kSsimWindow && test.height >= kSsimWindow;
-  nlohmann::json result = {
-      {"rmse", rmse(test, reference)},
-      {"rel_mse", relative_mse(test, reference)},
-      {"psnr", number_or_null(psnr(test, reference))},
-      {"max_abs", max_abs_error(test, reference)},
-      {"ssim", ssim_defined ? nlohmann::json(ssim(test, reference)) : nlohmann::json(nullptr)},
-      {"flip", flip(test, reference)},
-      {"width", test.width},
-      {"height", test.height},
-  };
+  nlohmann::json result = to_json(compare_images(test, reference));
+  result["width"] = test.width;
+  result["height"] = test.height;
   if (!options.heatmap.empty()) {
     ScalarImage map = options.heatmap_metric == "flip"  ? flip_map(test, reference)
                       : options.heatmap_metric == "abs" ? absolute_error_map(test, reference)

@@ -1,14 +1,11 @@
 #include "gpu/direct_pass.hpp"
 
 #include <algorithm>
-#include <array>
 #include <variant>
 #include <vector>
 
 #include "common/error.hpp"
-#include "gpu/scene_upload.hpp"
 #include "render_direct.spv.h"
-#include "vk/kernel.hpp"
 
 namespace facet::gpu {
 
@@ -27,35 +24,36 @@ int tile_count(int width, int height, int tile_size) {
   return ((width + tile_size - 1) / tile_size) * ((height + tile_size - 1) / tile_size);
 }
 
-Image render_direct(vk::Context& context, const Scene& scene, int width, int height, const RenderMethod& method,
-                    RenderStats* stats, const TileProgress& progress, int tile_size) {
+DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size)
+    : scene_(&scene),
+      tile_size_(tile_size > 0 ? tile_size : throw Error("tile size must be positive")),
+      buffers_(upload_scene(context, scene)),
+      pixels_(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size),
+      kernel_(context, {.name = "render_direct",
+                        .spirv = render_direct_spv,
+                        .buffer_count = static_cast<uint32_t>(buffers_.bindings(pixels_).size()),
+                        .push_constant_bytes = sizeof(GpuTile),
+                        .specialization = {{0, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
+                                           {1, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
+                                           {2, static_cast<uint32_t>(method.texture)},
+                                           {3, static_cast<uint32_t>(method.samples_per_axis)}}}) {}
+
+Image DirectPass::render(const Camera& camera, int width, int height, RenderStats* stats,
+                         const TileProgress& progress) {
   if (width <= 0 || height <= 0) throw Error("image size must be positive");
-  SceneBuffers buffers = upload_scene(context, scene, width, height);
-  // One tile's pixels at a time: frames of any size stay within the storage-buffer range.
-  vk::Buffer pixels(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size);
-  vk::Kernel kernel(context, {.name = "render_direct",
-                              .spirv = render_direct_spv,
-                              .buffer_count = 11,
-                              .push_constant_bytes = sizeof(GpuTile),
-                              .specialization = {{0, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
-                                                 {1, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
-                                                 {2, static_cast<uint32_t>(method.texture)},
-                                                 {3, static_cast<uint32_t>(method.samples_per_axis)}}});
-  const std::array<const vk::Buffer*, 11> bindings = {
-      &buffers.globals,   &buffers.planes,         &buffers.spheres, &buffers.nodes,     &buffers.triangles,
-      &buffers.materials, &pixels,                 &buffers.texture_levels, &buffers.texels, &buffers.colormaps,
-      &buffers.colormap_points};
+  buffers_.set_camera(*scene_, camera, width, height);
+  const std::vector<const vk::Buffer*> bindings = buffers_.bindings(pixels_);
   Image image(width, height);
-  std::vector<vec4> tile_rgba(static_cast<size_t>(tile_size) * tile_size);
+  std::vector<vec4> tile_rgba(static_cast<size_t>(tile_size_) * tile_size_);
   RenderStats local;
-  const int tiles = tile_count(width, height, tile_size);
-  for (int y0 = 0; y0 < height; y0 += tile_size)
-    for (int x0 = 0; x0 < width; x0 += tile_size) {
-      const int w = std::min(tile_size, width - x0), h = std::min(tile_size, height - y0);
+  const int tiles = tile_count(width, height, tile_size_);
+  for (int y0 = 0; y0 < height; y0 += tile_size_)
+    for (int x0 = 0; x0 < width; x0 += tile_size_) {
+      const int w = std::min(tile_size_, width - x0), h = std::min(tile_size_, height - y0);
       GpuTile tile{uvec4(x0, y0, w, h)};
       glm::uvec3 groups((w + kWorkgroup - 1) / kWorkgroup, (h + kWorkgroup - 1) / kWorkgroup, 1);
-      local.gpu_ms += kernel.dispatch(bindings, &tile, groups);
-      pixels.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);
+      local.gpu_ms += kernel_.dispatch(bindings, &tile, groups);
+      pixels_.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) image.set(x0 + x, y0 + y, glm::vec3(tile_rgba[static_cast<size_t>(y) * w + x]));
       ++local.tiles;
@@ -63,6 +61,13 @@ Image render_direct(vk::Context& context, const Scene& scene, int width, int hei
     }
   if (stats) *stats = local;
   return image;
+}
+
+Image render_direct(vk::Context& context, const Scene& scene, int width, int height, const RenderMethod& method,
+                    RenderStats* stats, const TileProgress& progress, int tile_size) {
+  if (width <= 0 || height <= 0) throw Error("image size must be positive");
+  DirectPass pass(context, scene, method, tile_size);
+  return pass.render(scene.camera, width, height, stats, progress);
 }
 
 }  // namespace facet::gpu

@@ -5,9 +5,12 @@
 #include <functional>
 
 #include "gpu/render_method.hpp"
+#include "gpu/scene_upload.hpp"
 #include "image/image.hpp"
 #include "scene/scene.hpp"
+#include "vk/buffer.hpp"
 #include "vk/context.hpp"
+#include "vk/kernel.hpp"
 
 namespace facet::gpu {
 
@@ -24,8 +27,28 @@ int tile_count(int width, int height, int tile_size = kDefaultTileSize);
 // Progress callback: tiles done, tiles in all.
 using TileProgress = std::function<void(int, int)>;
 
-// Renders `scene` at width x height with `method` in square tiles of `tile_size` pixels, one
-// submission per tile, so no single submission runs for seconds.
+// The pass prepared for one scene and method: its buffers, precomputed data (MIP chains) and
+// pipeline are built once, then any number of frames render from any camera (precompute once,
+// render many). Holds a reference to `scene`, which must outlive it.
+class DirectPass {
+ public:
+  DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method = {},
+             int tile_size = kDefaultTileSize);
+
+  // Renders width x height from `camera` in square tiles of `tile_size` pixels, one submission
+  // per tile, so no single submission runs for seconds.
+  Image render(const Camera& camera, int width, int height, RenderStats* stats = nullptr,
+               const TileProgress& progress = {});
+
+ private:
+  const Scene* scene_;
+  int tile_size_;
+  SceneBuffers buffers_;
+  vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range
+  vk::Kernel kernel_;
+};
+
+// One frame from the scene's own camera: DirectPass(context, scene, method, tile_size).render(...).
 Image render_direct(vk::Context& context, const Scene& scene, int width, int height, const RenderMethod& method = {},
                     RenderStats* stats = nullptr, const TileProgress& progress = {},
                     int tile_size = kDefaultTileSize);

@@ -45,22 +45,28 @@ std::vector<GpuTriangle> flatten_triangles(const Scene& scene, const Bvh& bvh) {
 
 }  // namespace
 
-GpuGlobals make_globals(const Scene& scene, int width, int height) {
-  const CameraFrame camera = camera_frame(scene.camera, width, height);
+std::vector<const vk::Buffer*> SceneBuffers::bindings(const vk::Buffer& pixels) const {
+  return {&globals,   &planes, &spheres,        &nodes, &triangles,       &materials,
+          &pixels,    &texture_levels, &texels, &colormaps, &colormap_points};
+}
+
+void SceneBuffers::set_camera(const Scene& scene, const Camera& camera, int width, int height) {
+  const CameraFrame frame = camera_frame(camera, width, height);
   GpuGlobals g{};
-  g.camera_origin = to_vec4(camera.origin);
-  g.camera_forward = to_vec4(camera.forward);
-  g.camera_right = to_vec4(camera.right);
-  g.camera_up = to_vec4(camera.up);
+  g.camera_origin = to_vec4(frame.origin);
+  g.camera_forward = to_vec4(frame.forward);
+  g.camera_right = to_vec4(frame.right);
+  g.camera_up = to_vec4(frame.up);
   g.light_direction = to_vec4(scene.light.direction);
   g.light_irradiance = to_vec4(scene.light.irradiance);
   g.ambient = to_vec4(scene.ambient);
   g.background = to_vec4(scene.background);
   g.image = uvec4(width, height, 0, 0);
-  return g;
+  g.counts = counts;
+  globals.upload(&g, sizeof(g));
 }
 
-SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, int height) {
+SceneBuffers upload_scene(vk::Context& context, const Scene& scene) {
   // Microsurfaces need the filtered microsurface pass (issue 6): a clear refusal, never a crash.
   for (size_t i = 0; i < scene.materials.size(); ++i)
     if (std::holds_alternative<MicrosurfaceMaterial>(scene.materials[i]))
@@ -100,8 +106,7 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, i
   std::memcpy(nodes.data(), bvh.nodes.data(), nodes.size() * sizeof(GpuBvhNode));
   std::vector<GpuTriangle> triangles = flatten_triangles(scene, bvh);
 
-  GpuGlobals globals = make_globals(scene, width, height);
-  globals.counts = uvec4(planes.size(), spheres.size(), nodes.size(), triangles.size());
+  const GpuGlobals globals{};  // the camera block is written per frame by set_camera
   return SceneBuffers{
       vk::Buffer::from(context, std::span<const GpuGlobals>(&globals, 1)),
       vk::Buffer::from(context, std::span<const GpuPlane>(planes)),
@@ -113,6 +118,7 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, i
       vk::Buffer::from(context, std::span<const vec4>(textures.texels)),
       vk::Buffer::from(context, std::span<const GpuColormap>(textures.colormaps)),
       vk::Buffer::from(context, std::span<const vec4>(textures.colormap_points)),
+      uvec4(planes.size(), spheres.size(), nodes.size(), triangles.size()),
   };
 }
 

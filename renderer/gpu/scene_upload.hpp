@@ -1,6 +1,8 @@
 // A scene flattened into the GPU's storage buffers (layouts in shaders/layout/scene_layout.glsl).
 #pragma once
 
+#include <vector>
+
 #include "gpu/scene_layout.hpp"
 #include "scene/scene.hpp"
 #include "vk/buffer.hpp"
@@ -19,12 +21,15 @@ struct SceneBuffers {
   vk::Buffer texels;
   vk::Buffer colormaps;
   vk::Buffer colormap_points;
+  uvec4 counts;  // planes, spheres, BVH nodes, triangles: GpuGlobals::counts
+
+  // The buffers in binding order (shaders/render/scene_bindings.glsl), `pixels` at binding 6.
+  std::vector<const vk::Buffer*> bindings(const vk::Buffer& pixels) const;
+  // Writes the camera block of the globals for `camera` and an image of width x height (the
+  // scene's own camera and resolution may be overridden per frame).
+  void set_camera(const Scene& scene, const Camera& camera, int width, int height);
 };
 
-// The camera block of GpuGlobals for an image of width x height (the scene's own
-// resolution may be overridden on the command line).
-GpuGlobals make_globals(const Scene& scene, int width, int height);
-
-SceneBuffers upload_scene(vk::Context& context, const Scene& scene, int width, int height);
+SceneBuffers upload_scene(vk::Context& context, const Scene& scene);
 
 }  // namespace facet::gpu

@@ -1,0 +1,111 @@
+// Closest hits of rays against the scene's planes, spheres and BVH of triangles, and the surface
+// parameterisation (uv, dp/du, dp/dv) at a hit: what every material's shading starts from.
+#ifndef FACET_RENDER_TRACE_GLSL
+#define FACET_RENDER_TRACE_GLSL
+#include "lib/analytic_intersect.glsl"
+#include "lib/triangle_intersect.glsl"
+#include "render/scene_bindings.glsl"
+
+const float kInfinity = 1e30;
+const uint kNoHit = 0xffffffffu;
+const int kStackSize = 64;
+const uint kPlane = 0u;
+const uint kSphere = 1u;
+const uint kTriangle = 2u;
+
+struct Hit {
+  float t;
+  vec3 normal;  // unnormalised shading normal (any side)
+  uint material;
+  uint primitive;  // kPlane, kSphere, kTriangle
+  uint index;
+  vec2 barycentric;  // triangles
+};
+
+Hit trace_triangles(vec3 o, vec3 d, Hit hit) {
+  if (globals.counts.z == 0u) return hit;
+  vec3 inv_d = 1.0 / d;
+  uint stack[kStackSize];
+  int top = 0;
+  stack[top++] = 0u;
+  while (top > 0) {
+    GpuBvhNode node = nodes[stack[--top]];
+    if (intersect_box(o, inv_d, node.lo, node.hi, hit.t) < 0.0) continue;
+    if (node.count > 0u) {
+      for (uint i = node.left_or_first; i < node.left_or_first + node.count; ++i) {
+        GpuTriangle tri = triangles[i];
+        vec3 tb = intersect_triangle(o, d, tri.p0.xyz, tri.p1.xyz, tri.p2.xyz, 0.0, hit.t);
+        if (tb.x < 0.0) continue;
+        vec3 n = (1.0 - tb.y - tb.z) * tri.n0.xyz + tb.y * tri.n1.xyz + tb.z * tri.n2.xyz;
+        if (dot(n, n) == 0.0) n = cross(tri.p1.xyz - tri.p0.xyz, tri.p2.xyz - tri.p0.xyz);
+        hit = Hit(tb.x, n, tri.material.x, kTriangle, i, tb.yz);
+      }
+    } else if (top + 2 <= kStackSize) {
+      stack[top++] = node.left_or_first + 1u;
+      stack[top++] = node.left_or_first;
+    }
+  }
+  return hit;
+}
+
+bool inside_plane_rectangle(GpuPlane plane, vec3 p) {
+  if (plane.uv_half_size.z <= 0.0) return true;
+  vec3 r = p - plane.point.xyz;
+  vec3 bitangent = cross(plane.normal.xyz, plane.tangent.xyz);
+  return abs(dot(r, plane.tangent.xyz)) <= plane.uv_half_size.z && abs(dot(r, bitangent)) <= plane.uv_half_size.w;
+}
+
+Hit trace(vec3 o, vec3 d, float t_min, float t_max) {
+  Hit hit = Hit(t_max, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0));
+  for (uint i = 0u; i < globals.counts.x; ++i) {
+    float t = intersect_plane(o, d, planes[i].point.xyz, planes[i].normal.xyz, t_min, hit.t);
+    if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * d))
+      hit = Hit(t, planes[i].normal.xyz, planes[i].material.x, kPlane, i, vec2(0.0));
+  }
+  for (uint i = 0u; i < globals.counts.y; ++i) {
+    vec4 s = spheres[i].center_radius;
+    float t = intersect_sphere(o, d, s.xyz, s.w, t_min, hit.t);
+    if (t > 0.0) hit = Hit(t, o + t * d - s.xyz, spheres[i].material.x, kSphere, i, vec2(0.0));
+  }
+  return trace_triangles(o, d, hit);
+}
+
+// uv at p and the tangents dp/du, dp/dv (the conventions of renderer/cpu/ray_caster.cpp).
+struct SurfaceUv {
+  vec2 uv;
+  vec3 dpdu;
+  vec3 dpdv;
+};
+
+SurfaceUv surface_uv(Hit hit, vec3 p) {
+  if (hit.primitive == kPlane) {
+    GpuPlane plane = planes[hit.index];
+    vec3 bitangent = cross(plane.normal.xyz, plane.tangent.xyz);
+    vec3 r = p - plane.point.xyz;
+    vec2 scale = plane.uv_half_size.xy;
+    return SurfaceUv(vec2(dot(r, plane.tangent.xyz), dot(r, bitangent)) * scale, plane.tangent.xyz / scale.x,
+                     bitangent / scale.y);
+  }
+  if (hit.primitive == kSphere) {
+    // u: longitude about +y from +z, v: polar angle from +y (both in [0, 1]).
+    vec4 s = spheres[hit.index].center_radius;
+    vec3 n = normalize(p - s.xyz);
+    float phi = atan(n.x, n.z);
+    float theta = acos(clamp(n.y, -1.0, 1.0));
+    vec3 dpdu = 2.0 * FACET_PI * s.w * vec3(n.z, 0.0, -n.x);
+    vec3 dpdv = FACET_PI * s.w * vec3(cos(theta) * sin(phi), -sin(theta), cos(theta) * cos(phi));
+    return SurfaceUv(vec2(0.5 + phi * (0.5 * FACET_INV_PI), theta * FACET_INV_PI), dpdu, dpdv);
+  }
+  GpuTriangle tri = triangles[hit.index];
+  vec2 b = hit.barycentric;
+  vec2 uv0 = tri.uv01.xy, uv1 = tri.uv01.zw, uv2 = tri.uv2.xy;
+  vec2 uv = (1.0 - b.x - b.y) * uv0 + b.x * uv1 + b.y * uv2;
+  // dp = e1 db1 + e2 db2 and duv = duv1 db1 + duv2 db2: invert the uv Jacobian of the triangle.
+  vec3 e1 = tri.p1.xyz - tri.p0.xyz, e2 = tri.p2.xyz - tri.p0.xyz;
+  vec2 duv1 = uv1 - uv0, duv2 = uv2 - uv0;
+  float det = duv1.x * duv2.y - duv1.y * duv2.x;
+  if (abs(det) < 1e-20) return SurfaceUv(uv, vec3(0.0), vec3(0.0));
+  return SurfaceUv(uv, (duv2.y * e1 - duv1.y * e2) / det, (duv1.x * e2 - duv2.x * e1) / det);
+}
+
+#endif
