@@ -7,8 +7,12 @@
 //   1 kHasTexture      colour-mapped textures
 //   2 kTextureMethod   0 naive (finest level, colour map per sample), 1 mip (MIP-mapped texture, then
 //                      colour map), 2 colormip (MIP-mapped colour-mapped texture), 3 filtered (the
-//                      footprint's Gaussian N(mu, sigma^2) integrated against the colour map exactly)
+//                      footprint's Gaussian N(mu, sigma^2) integrated against the colour map exactly),
+//                      4 filtered:table (the same Gaussian looked up in the map's prefiltered table)
 //   3 kSamplesPerAxis  K: K x K stratified rays per pixel, averaged (ss:K)
+//   4 kHasDiffraction  diffraction gratings (render/diffraction_shading.glsl)
+//   5 kDiffractionMethod  how a grating's spectrum becomes a colour: 0 spectral (wavelength samples)
+//   6 kHasMicrosurface colour-mapped microsurfaces on finite planes, by kTextureMethod
 // Tracing, the scene's buffers and each material family's shading live in render/*.glsl.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -16,12 +20,17 @@ layout(constant_id = 0) const bool kHasMicroflake = false;
 layout(constant_id = 1) const bool kHasTexture = false;
 layout(constant_id = 2) const uint kTextureMethod = 0u;
 layout(constant_id = 3) const uint kSamplesPerAxis = 1u;
+layout(constant_id = 4) const bool kHasDiffraction = false;
+layout(constant_id = 5) const uint kDiffractionMethod = 0u;
+layout(constant_id = 6) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
 
 #include "lib/camera.glsl"
 #include "lib/lambert.glsl"
 #include "lib/microflake_shading.glsl"
+#include "render/diffraction_shading.glsl"
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
+#include "render/microsurface_shading.glsl"
 #include "render/trace.glsl"
 
 vec3 camera_ray(vec2 film) {
@@ -44,6 +53,9 @@ vec3 radiance(vec2 film, float pixel_step) {
   vec3 shadow_origin = p + n * (1e-4 * max(1.0, length(p)));
   float visibility = dot(n, l) > 0.0 && trace(shadow_origin, l, 0.0, kInfinity).material != kNoHit ? 0.0 : 1.0;
   GpuMaterial m = materials[hit.material];
+  if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE)  // finite planes only (scene loader)
+    return microsurface_radiance(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
+                                 camera_ray(film + vec2(0.0, pixel_step)), l, visibility);
   if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
     return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
                                visibility, globals.ambient.rgb);
@@ -57,7 +69,10 @@ vec3 radiance(vec2 film, float pixel_step) {
     }
     albedo = textured_albedo(m, s.uv, duv_dx, duv_dy);
   }
-  return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
+  vec3 diffracted = vec3(0.0);  // a diffraction material's albedo is its Lambertian base
+  if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION)
+    diffracted = diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility);
+  return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb) + diffracted;
 }
 
 void main() {

@@ -10,6 +10,7 @@ packages=(
   libtbb-dev libcli11-dev libboost-dev libembree-dev libfftw3-dev
   libgtest-dev libbenchmark-dev
   openimageio-tools hyperfine
+  clang-16 libclang-rt-16-dev
 )
 
 missing=()

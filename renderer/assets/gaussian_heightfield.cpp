@@ -51,9 +51,9 @@ std::vector<double> periodised_acf(const GaussianHeightfieldParams& p) {
 }  // namespace
 
 void validate(const GaussianHeightfieldParams& p) {
-  if (p.width < 2 || p.height < 2)
-    throw Error("heightfield size must be at least 2x2, got " + std::to_string(p.width) + "x" +
-                std::to_string(p.height));
+  if (p.width < 2 || p.height < 2 || p.width > kMaxFieldSide || p.height > kMaxFieldSide)
+    throw Error("heightfield size must be from 2x2 to " + std::to_string(kMaxFieldSide) + "x" +
+                std::to_string(kMaxFieldSide) + ", got " + std::to_string(p.width) + "x" + std::to_string(p.height));
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   if (!positive(p.texel_size))
     throw Error("heightfield texel size must be positive, got " + format_number(p.texel_size));

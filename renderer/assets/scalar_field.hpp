@@ -11,6 +11,10 @@
 
 namespace facet::assets {
 
+// The largest side of a generated field (`facet make`, scene textures): 8192^2 doubles are 512 MiB,
+// checked before anything is allocated (docs/limits.md).
+inline constexpr int kMaxFieldSide = 8192;
+
 struct ScalarField {
   int width = 0, height = 0;
   std::vector<double> values;

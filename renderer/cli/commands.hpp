@@ -23,5 +23,7 @@ void add_make_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_eval_command(CLI::App& app, Action& action);
 void add_reference_command(CLI::App& app, Action& action);
+void add_batch_command(CLI::App& app, Action& action);
+void add_bench_command(CLI::App& app, Action& action);
 
 }  // namespace facet::cli

@@ -3,7 +3,8 @@
 //   --grating JSON_OR_FILE   the grating (renderer/diffraction/grating.hpp lists the keys)
 //   in:  {"wi": [x, y, z], "wr": [x, y, z], "lambda_nm", "id"?}   (unit vectors, surface frame, z up)
 //   out: {"id", "brdf", "P2"}
-// The tables are built for the smallest wavelength and largest |w| among the input lines.
+// The tables are built for the smallest wavelength and largest |w| among the input lines; a line
+// that makes them impossible gets its own error and the others are answered.
 // --exact (CPU only) evaluates the DFT of exp(i k w h) itself instead of the Taylor sum.
 #include <algorithm>
 #include <iostream>
@@ -80,6 +81,27 @@ std::vector<nlohmann::json> evaluate(const DiffractionOptions& options, const di
   return answers(results);
 }
 
+// One batch shares one table set; when the batch's extremes make it impossible (an absurd
+// wavelength or a grating too high for the Taylor bound), each line is answered on its own, so
+// only the offending lines get {"error": ...}.
+std::vector<nlohmann::json> evaluate_lines(const DiffractionOptions& options, const diffraction::Grating& grating,
+                                           const std::vector<DiffractionQuery>& qs) {
+  try {
+    return evaluate(options, grating, qs);
+  } catch (const Error&) {
+    if (qs.size() == 1) throw;
+  }
+  std::vector<nlohmann::json> out;
+  for (const DiffractionQuery& q : qs) {
+    try {
+      out.push_back(evaluate(options, grating, {q}).front());
+    } catch (const Error& e) {
+      out.push_back({{"error", e.what()}});
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 void add_eval_diffraction(CLI::App& eval, Action& action) {
@@ -96,7 +118,7 @@ void add_eval_diffraction(CLI::App& eval, Action& action) {
       const diffraction::Grating grating = diffraction::parse_grating(options->grating);
       run_json_lines<DiffractionQuery>(
           std::cin, std::cout, parse_diffraction_query,
-          [&](const std::vector<DiffractionQuery>& qs) { return evaluate(*options, grating, qs); });
+          [&](const std::vector<DiffractionQuery>& qs) { return evaluate_lines(*options, grating, qs); });
       return 0;
     };
   });

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "image/png_io.hpp"
+#include "scene/camera_path.hpp"
 
 namespace facet::cli {
 
@@ -18,6 +19,19 @@ void add_resolution_options(CLI::App& command, ResolutionOptions& options) {
       ->check(CLI::Range(1, kMaxResolution));
   command.add_option("--height", options.height, "Image height in pixels (default: the scene's)")
       ->check(CLI::Range(1, kMaxResolution));
+}
+
+void FrameOption::apply(Scene& scene) const {
+  if (frame >= 0) scene.camera = camera_at(scene, frame);
+}
+
+void FrameOption::annotate(ExrMetadata& metadata) const {
+  if (frame >= 0) metadata["facet:frame"] = static_cast<std::int64_t>(frame);
+}
+
+void add_frame_option(CLI::App& command, FrameOption& option) {
+  command.add_option("--frame", option.frame, "Render frame F of the scene's camera_path (default: its still camera)")
+      ->check(CLI::Range(0, kMaxPathFrames - 1));
 }
 
 void add_output_options(CLI::App& command, OutputOptions& options) {
@@ -39,6 +53,12 @@ ExrMetadata frame_metadata(const Scene& scene, const std::string& method, int64_
           {"facet:render_ms", wall_ms},
           {"facet:device", device},
           {"facet:version", std::string(FACET_VERSION)}};
+}
+
+void add_reference_metadata(ExrMetadata& metadata, int grid, std::int64_t seed) {
+  metadata["facet:grid"] = static_cast<std::int64_t>(grid);
+  metadata["facet:seed"] = seed;
+  metadata["facet:filter"] = std::string("box");
 }
 
 void write_frame(const OutputOptions& options, const Image& image, const ExrMetadata& metadata) {

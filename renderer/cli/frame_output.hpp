@@ -22,6 +22,15 @@ struct ResolutionOptions {
 };
 void add_resolution_options(CLI::App& command, ResolutionOptions& options);
 
+// --frame F: frame F of the scene's camera_path (scene/camera_path.hpp) instead of its still camera.
+struct FrameOption {
+  int frame = -1;  // -1: the still `camera`
+  // Puts the frame's camera into `scene` and names the frame in `metadata`; nothing for -1.
+  void apply(Scene& scene) const;
+  void annotate(ExrMetadata& metadata) const;
+};
+void add_frame_option(CLI::App& command, FrameOption& option);
+
 struct OutputOptions {
   std::filesystem::path path;
   std::string pixel_type = "half";
@@ -32,6 +41,9 @@ void add_output_options(CLI::App& command, OutputOptions& options);
 
 ExrMetadata frame_metadata(const Scene& scene, const std::string& method, int64_t samples_per_pixel,
                            const std::string& device, double gpu_ms, double wall_ms);
+
+// The reference renderer's settings, for its frames' metadata.
+void add_reference_metadata(ExrMetadata& metadata, int grid, std::int64_t seed);
 
 // Writes the EXR (atomically) and, unless disabled, a PNG preview beside it (same stem).
 void write_frame(const OutputOptions& options, const Image& image, const ExrMetadata& metadata);

@@ -19,6 +19,7 @@ namespace {
 struct ReferenceCommandOptions {
   std::filesystem::path scene;
   ResolutionOptions resolution;
+  FrameOption frame;
   OutputOptions output;
   int grid = 32;
   std::int64_t seed = 1;
@@ -33,7 +34,8 @@ extern "C" void on_interrupt(int) { interrupted.store(true); }
 
 int run_reference(const ReferenceCommandOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const Scene scene = load_scene(options.scene);
+  Scene scene = load_scene(options.scene);
+  options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
@@ -56,9 +58,8 @@ int run_reference(const ReferenceCommandOptions& options) {
   const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ExrMetadata metadata = frame_metadata(scene, "reference", static_cast<std::int64_t>(options.grid) * options.grid,
                                         "cpu", 0.0, wall_ms);
-  metadata["facet:grid"] = static_cast<std::int64_t>(options.grid);
-  metadata["facet:seed"] = options.seed;
-  metadata["facet:filter"] = std::string("box");
+  add_reference_metadata(metadata, options.grid, options.seed);
+  options.frame.annotate(metadata);
   write_frame(options.output, image, metadata);
   const double samples = static_cast<double>(width) * height * options.grid * options.grid;
   std::cerr << "facet: reference " << width << "x" << height << ", grid " << options.grid << "x" << options.grid
@@ -83,6 +84,7 @@ void add_reference_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   add_resolution_options(*command, options->resolution);
+  add_frame_option(*command, options->frame);
   add_output_options(*command, options->output);
   command->callback([&action, options] { action = [options] { return run_reference(*options); }; });
 }

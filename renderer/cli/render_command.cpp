@@ -20,26 +20,50 @@ struct RenderOptions {
   std::filesystem::path scene;
   DeviceOptions device;
   ResolutionOptions resolution;
+  FrameOption frame;
   OutputOptions output;
   std::string method = "naive";
+  std::string diffraction;  // empty: the diffraction materials' own "method"
+  int wavelengths = 0;      // 0: the materials' own counts
+  int taylor = 0;
 };
+
+// --diffraction, --wavelengths and --taylor on top of --method (they win over a diffraction:M method).
+gpu::RenderMethod render_method(const RenderOptions& options) {
+  gpu::RenderMethod method = gpu::RenderMethod::parse(options.method);
+  if (!options.diffraction.empty()) {
+    method.diffraction.method = diffraction::parse_diffraction_method(options.diffraction);
+    if (!method.diffraction.method)
+      throw Error("--diffraction " + options.diffraction + ": must be one of spectral, preintegrated, orders");
+  }
+  method.diffraction.wavelengths = options.wavelengths;
+  method.diffraction.taylor = options.taylor;
+  return method;
+}
 
 int run_render(const RenderOptions& options) {
   auto start = std::chrono::steady_clock::now();
   Scene scene = load_scene(options.scene);
+  options.frame.apply(scene);
   auto [width, height] = options.resolution.resolve(scene.camera);
-  const gpu::RenderMethod method = gpu::RenderMethod::parse(options.method);
+  const gpu::RenderMethod method = render_method(options);
   vk::Context context({options.device.device, options.device.validation});
+  gpu::DirectPass pass(context, scene, method);
   ProgressBar progress("render", gpu::tile_count(width, height));
   gpu::RenderStats stats;
-  Image image = gpu::render_direct(context, scene, width, height, method, &stats,
-                                    [&](int done, int) { progress.update(done); });
+  Image image = pass.render(scene.camera, width, height, &stats, [&](int done, int) { progress.update(done); });
   progress.finish();
   if (context.validation_message_count() > 0)
     throw Error("Vulkan validation reported " + std::to_string(context.validation_message_count()) +
                 " messages; no image written");
   double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ExrMetadata metadata = frame_metadata(scene, method.name(), method.samples_per_axis * method.samples_per_axis, context.info().name, stats.gpu_ms, wall_ms);
+  options.frame.annotate(metadata);
+  if (pass.diffraction().most_wavelengths > 0) {  // the scene has diffraction materials
+    metadata["facet:diffraction_method"] = std::string(diffraction::diffraction_method_name(pass.diffraction().method));
+    metadata["facet:wavelengths"] = std::int64_t{pass.diffraction().most_wavelengths};
+    metadata["facet:taylor_terms"] = std::int64_t{pass.diffraction().most_taylor};
+  }
   write_frame(options.output, image, metadata);
   std::cerr << "facet: rendered " << width << "x" << height << " in " << wall_ms << " ms (GPU "
             << stats.gpu_ms << " ms in " << stats.tiles << " tiles) on " << context.info().name
@@ -55,9 +79,19 @@ void add_render_command(CLI::App& app, Action& action) {
   command->add_option("scene", options->scene, "Scene file (JSON, see scenes/README.md)")->required();
   add_device_options(*command, options->device);
   command->add_option("--method", options->method,
-                      "How sub-pixel detail becomes a pixel: naive, mip, colormip, ss:K (K x K rays), filtered")
+                      "How sub-pixel detail becomes a pixel: naive, mip, colormip, ss:K (K x K rays), filtered, "
+                      "filtered:table")
       ->capture_default_str();
+  command->add_option("--diffraction", options->diffraction,
+                      "How diffraction materials become colours: spectral, preintegrated or orders (default: each "
+                      "material's \"method\")");
+  command->add_option("--wavelengths", options->wavelengths,
+                      "Wavelength samples of the diffraction materials' colour integral (default: from their tolerance)")
+      ->check(CLI::Range(2, 4096));
+  command->add_option("--taylor", options->taylor, "Taylor terms of the diffraction BRDF (default: from the tolerance)")
+      ->check(CLI::Range(1, 64));
   add_resolution_options(*command, options->resolution);
+  add_frame_option(*command, options->frame);
   add_output_options(*command, options->output);
   command->callback([&action, options] { action = [options] { return run_render(*options); }; });
 }

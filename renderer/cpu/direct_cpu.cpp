@@ -15,7 +15,8 @@ namespace facet::cpu {
 
 namespace k = kernels::f64;
 
-Image render_direct_cpu(const Scene& scene, int width, int height) {
+Image render_direct_cpu(const Scene& scene, int width, int height, const diffraction::DiffractionSettings& diffraction,
+                        DiffractionShading::Transform transform) {
   // The twin of the GPU pass renders what it renders; sub-pixel materials are the reference's.
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     if (std::holds_alternative<ColormapTextureMaterial>(scene.materials[i]) ||
@@ -28,6 +29,7 @@ Image render_direct_cpu(const Scene& scene, int width, int height) {
   const glm::dvec3 l = scene.light.direction;
 
   RayCaster caster(scene);
+  const DiffractionShading diffracted(scene, transform, diffraction);
   Image image(width, height);
   tbb::parallel_for(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
@@ -40,6 +42,7 @@ Image render_direct_cpu(const Scene& scene, int width, int height) {
         double visibility =
             glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;
         color = shade_macro_surface(scene, scene.materials[hit->material], n, -d, hit->uv, visibility);
+        if (diffracted.handles(hit->material)) color += diffracted.radiance(hit->material, n, hit->dpdu, -d, visibility);
       }
       image.set(x, y, glm::vec3(color));
     }

@@ -60,6 +60,9 @@ glm::dvec3 shade_macro_surface(const Scene& scene, const Material& material, glm
         } else if constexpr (std::is_same_v<M, ColormapTextureMaterial>) {
           const glm::dvec3 albedo = m.colormap.at(sample_bilinear(*m.texture, uv));
           return k::lambert_radiance(albedo, n, l, scene.light.irradiance, visibility, scene.ambient);
+        } else if constexpr (std::is_same_v<M, DiffractionMaterial>) {
+          // The diffuse base only; DiffractionShading adds the diffracted light (it needs the tables).
+          return k::lambert_radiance(m.base_albedo, n, l, scene.light.irradiance, visibility, scene.ambient);
         } else {
           static_assert(std::is_same_v<M, MicrosurfaceMaterial>);
           return glm::dvec3(0.0);  // never reached: microsurfaces are traced as height fields

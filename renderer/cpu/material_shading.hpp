@@ -25,7 +25,8 @@ glm::dvec3 microsurface_albedo(const MicrosurfaceMaterial& material, double heig
 glm::dvec3 beckmann_specular_radiance(const BeckmannSpecular& specular, glm::dvec3 n, glm::dvec3 tangent,
                                       glm::dvec3 v, glm::dvec3 l, glm::dvec3 light_irradiance, double visibility);
 
-// A macro-surface sample (any material but microsurface): Lambert, microflake or colour-mapped texture.
+// A macro-surface sample (any material but microsurface): Lambert, microflake or colour-mapped texture,
+// or the Lambertian base of a diffraction material (cpu/diffraction_shading.hpp adds its diffracted light).
 // n: shading normal facing the viewer; v: unit direction toward the viewer; visibility of the light.
 glm::dvec3 shade_macro_surface(const Scene& scene, const Material& material, glm::dvec3 n, glm::dvec3 v,
                                glm::dvec2 uv, double visibility);

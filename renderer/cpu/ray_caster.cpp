@@ -88,6 +88,7 @@ Hit analytic_hit(const Scene& scene, const std::vector<PlaneFrame>& frames, cons
     // u: longitude about +y from +z, v: polar angle from +y, both in [0, 1].
     hit.uv = {0.5 + std::atan2(n.x, n.z) * (0.5 * std::numbers::inv_pi),
               std::acos(glm::clamp(n.y, -1.0, 1.0)) * std::numbers::inv_pi};
+    hit.dpdu = 2.0 * std::numbers::pi * s.radius * glm::dvec3(n.z, 0.0, -n.x);
     hit.material = s.material;
   } else {
     const Plane& p = scene.planes[a.index];
@@ -96,6 +97,7 @@ Hit analytic_hit(const Scene& scene, const std::vector<PlaneFrame>& frames, cons
     hit.geometric_normal = frame.normal;
     hit.uv = glm::dvec2(glm::dot(hit.position - p.point, frame.tangent), glm::dot(hit.position - p.point, frame.bitangent)) *
              p.uv_scale;
+    hit.dpdu = frame.tangent / p.uv_scale.x;
     hit.material = p.material;
   }
   hit.shading_normal = hit.geometric_normal;
@@ -136,6 +138,12 @@ Hit mesh_hit(const Mesh& mesh, uint32_t triangle, const RTCHit& h, float t_float
     if (glm::length(n) > 1e-12) hit.shading_normal = glm::normalize(n);  // opposite normals can cancel
   }
   hit.uv = mesh.uvs.empty() ? glm::dvec2(b1, b2) : b0 * mesh.uvs[i0] + b1 * mesh.uvs[i1] + b2 * mesh.uvs[i2];
+  // dp = e1 db1 + e2 db2 and duv = duv1 db1 + duv2 db2: invert the triangle's uv Jacobian (without
+  // uvs, u = b1 and dp/du = e1).
+  const glm::dvec2 duv1 = mesh.uvs.empty() ? glm::dvec2(1, 0) : mesh.uvs[i1] - mesh.uvs[i0];
+  const glm::dvec2 duv2 = mesh.uvs.empty() ? glm::dvec2(0, 1) : mesh.uvs[i2] - mesh.uvs[i0];
+  const double uv_det = duv1.x * duv2.y - duv1.y * duv2.x;
+  if (std::abs(uv_det) > 1e-20) hit.dpdu = (duv2.y * e1 - duv1.y * e2) / uv_det;
   hit.material = mesh.material;
   face_toward_ray(hit, d);
   return hit;

@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include "common/error.hpp"
+#include "cpu/diffraction_shading.hpp"
 #include "cpu/material_shading.hpp"
 #include "cpu/reference_scene.hpp"
 #include "kernels/shared.hpp"
@@ -32,9 +33,11 @@ double unit_interval(std::uint64_t bits) { return static_cast<double>(bits >> 11
 
 class PixelIntegrator {
  public:
-  PixelIntegrator(const Scene& scene, const ReferenceScene& world, const ReferenceOptions& options)
+  PixelIntegrator(const Scene& scene, const ReferenceScene& world, const DiffractionShading& diffracted,
+                  const ReferenceOptions& options)
       : scene_(scene),
         world_(world),
+        diffracted_(diffracted),
         options_(options),
         camera_(camera_frame(scene.camera, options.width, options.height)),
         resolution_(options.width, options.height) {}
@@ -50,20 +53,37 @@ class PixelIntegrator {
             options_.jitter ? reference_jitter(options_.seed, index, static_cast<std::uint64_t>(j) * n + i)
                             : glm::dvec2(0.5);
         const glm::dvec2 film(x + (i + offset.x) / n, y + (j + offset.y) / n);
-        sum += radiance(k::camera_ray_direction(camera_.forward, camera_.right, camera_.up, film, resolution_));
+        const auto sample = static_cast<std::uint64_t>(j) * n + i;
+        sum += radiance(k::camera_ray_direction(camera_.forward, camera_.right, camera_.up, film, resolution_),
+                        wavelength_sample(index, sample));
       }
     }
     return sum / (static_cast<double>(n) * n);
   }
 
  private:
-  glm::dvec3 radiance(glm::dvec3 d) const {
+  // Each of the N x N samples of a pixel gets its own wavelength: stratum (s P + pixel offset) mod N^2
+  // of [0, 1), a permutation (P = 7919 is prime, N <= 4096) that decouples the wavelength stratum
+  // from the sample's position, jittered within the stratum (docs/diffraction.md, "Exact reference").
+  double wavelength_sample(std::uint64_t pixel, std::uint64_t sample) const {
+    const std::uint64_t strata = static_cast<std::uint64_t>(options_.grid) * options_.grid;
+    const std::uint64_t stratum = (sample * 7919u + mix64(options_.seed ^ pixel) % strata) % strata;
+    const double jitter = options_.jitter ? reference_jitter(~options_.seed, pixel, sample).x : 0.5;
+    return (static_cast<double>(stratum) + jitter) / static_cast<double>(strata);
+  }
+
+  glm::dvec3 radiance(glm::dvec3 d, double wavelength_u) const {
     const auto hit = world_.intersect(camera_.origin, d);
     if (!hit) return scene_.background;
     const glm::dvec3 l = scene_.light.direction;
     const double visibility = glm::dot(hit->normal, l) > 0.0 && world_.occluded(world_.shadow_origin(*hit), l) ? 0.0 : 1.0;
     const Material& material = scene_.materials[hit->material];
-    if (!hit->micro) return shade_macro_surface(scene_, material, hit->normal, -d, hit->uv, visibility);
+    if (!hit->micro) {
+      glm::dvec3 c = shade_macro_surface(scene_, material, hit->normal, -d, hit->uv, visibility);
+      if (diffracted_.handles(hit->material))
+        c += diffracted_.radiance_at(hit->material, hit->normal, hit->dpdu, -d, visibility, wavelength_u);
+      return c;
+    }
     const auto& m = std::get<MicrosurfaceMaterial>(material);
     glm::dvec3 c = k::lambert_radiance(microsurface_albedo(m, hit->height, hit->slope), hit->normal, l,
                                        scene_.light.irradiance, visibility, scene_.ambient);
@@ -74,6 +94,7 @@ class PixelIntegrator {
 
   const Scene& scene_;
   const ReferenceScene& world_;
+  const DiffractionShading& diffracted_;
   const ReferenceOptions& options_;
   CameraFrame camera_;
   glm::dvec2 resolution_;
@@ -96,7 +117,8 @@ glm::dvec2 reference_jitter(std::uint64_t seed, std::uint64_t pixel, std::uint64
 Image render_reference(const Scene& scene, const ReferenceOptions& options) {
   validate(options);
   const ReferenceScene world(scene);
-  const PixelIntegrator integrator(scene, world, options);
+  const DiffractionShading diffracted(scene, DiffractionShading::Transform::Exact);
+  const PixelIntegrator integrator(scene, world, diffracted, options);
   const int ts = options.tile_size;
   const int tiles_x = (options.width + ts - 1) / ts, tiles_y = (options.height + ts - 1) / ts;
   const std::int64_t tiles = static_cast<std::int64_t>(tiles_x) * tiles_y;

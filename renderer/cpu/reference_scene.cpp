@@ -46,13 +46,13 @@ ReferenceScene::ReferenceScene(const Scene& scene)
 std::optional<SurfaceHit> ReferenceScene::intersect(glm::dvec3 o, glm::dvec3 d) const {
   std::optional<SurfaceHit> best;
   if (const auto hit = caster_.intersect(o, d))
-    best = SurfaceHit{hit->t, hit->position, hit->shading_normal, hit->uv, hit->material};
+    best = SurfaceHit{hit->t, hit->position, hit->shading_normal, hit->uv, hit->material, hit->dpdu};
   for (const Patch& patch : patches_) {
     const auto hit = patch.field.intersect(o, d, best ? best->t : std::numeric_limits<double>::infinity());
     if (!hit) continue;
     // The field's normal is the upper side's; turn it toward the ray as RayCaster does.
     const glm::dvec3 n = glm::dot(hit->normal, d) > 0.0 ? -hit->normal : hit->normal;
-    best = SurfaceHit{hit->t,    hit->position, n,          hit->uv, patch.material,
+    best = SurfaceHit{hit->t,    hit->position, n,           hit->uv,    patch.material, glm::dvec3(0.0),
                       true,      hit->height,   hit->slope, patch.field.placement().tangent};
   }
   return best;

@@ -22,6 +22,7 @@ struct SurfaceHit {
   glm::dvec3 normal;  // shading normal, on the side the ray came from
   glm::dvec2 uv;      // macro hits: the object's uv
   uint32_t material;
+  glm::dvec3 dpdu{0.0};  // macro hits: the tangent dp/du (RayCaster's Hit)
   // Microsurface hits only: the field's height z, slope ∇z, and the plane's tangent (for anisotropy).
   bool micro = false;
   double height = 0.0;

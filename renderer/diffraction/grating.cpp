@@ -92,8 +92,8 @@ Grating height_map(JsonObjectReader& reader, const std::filesystem::path& base) 
 
 }  // namespace
 
-Grating grating_from_json(const nlohmann::json& spec, const std::string& source) {
-  JsonObjectReader reader(spec, source, "grating");
+Grating grating_from_json(const nlohmann::json& spec, const std::string& source, const std::string& path) {
+  JsonObjectReader reader(spec, source, path);
   const std::string type = reader.string("type");
   const std::filesystem::path base =
       std::filesystem::exists(source) ? std::filesystem::path(source).parent_path() : std::filesystem::current_path();

@@ -30,8 +30,9 @@ struct Grating {
 //   "heightmap": "path" (.exr, 16/8-bit grey .png, or Gwyddion .gsf), "channel" (EXR, default "Y"),
 //               "nm_per_sample", "nm_per_unit" (required for .exr/.png, absent for .gsf, which has units)
 //   every type: "coherence_um" (default: size / 2), "ior" (default 1.56)
-// Throws facet::Error with one line naming the key.
+// Throws facet::Error with one line naming the key; `path` names the object in messages
+// ("materials.plate.grating" in a scene file).
 Grating parse_grating(const std::string& json_or_file);
-Grating grating_from_json(const nlohmann::json& spec, const std::string& source);
+Grating grating_from_json(const nlohmann::json& spec, const std::string& source, const std::string& path = "grating");
 
 }  // namespace facet::diffraction

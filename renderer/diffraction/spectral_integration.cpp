@@ -15,10 +15,16 @@ constexpr double kPi = 3.14159265358979323846;
 
 double light_power(Illuminant light, double lambda_nm) { return light == Illuminant::D65 ? cie_d65(lambda_nm) : 1.0; }
 
-// XYZ of the light itself from the 1 nm table entries, Y normalised to 1.
-glm::dvec3 reference_white(Illuminant light) {
+// XYZ of the light itself from the 1 nm table entries.
+glm::dvec3 light_xyz(Illuminant light) {
   glm::dvec3 xyz(0.0);
   for (double l = kCieLambdaMinNm; l <= kCieLambdaMaxNm; l += 1.0) xyz += cie_cmf(l) * light_power(light, l);
+  return xyz;
+}
+
+// ... with Y normalised to 1.
+glm::dvec3 reference_white(Illuminant light) {
+  const glm::dvec3 xyz = light_xyz(light);
   return xyz / xyz.y;
 }
 
@@ -40,6 +46,11 @@ WavelengthSamples wavelength_samples(double spacing_nm, Illuminant light) {
   }
   for (auto& w : s.xyz_weight) w /= y_total;
   return s;
+}
+
+glm::dvec3 xyz_density(double lambda_nm, Illuminant light) {
+  static const double y_d65 = light_xyz(Illuminant::D65).y, y_e = light_xyz(Illuminant::E).y;
+  return cie_cmf(lambda_nm) * light_power(light, lambda_nm) / (light == Illuminant::D65 ? y_d65 : y_e);
 }
 
 double observer_spacing(double tolerance, Illuminant light) {

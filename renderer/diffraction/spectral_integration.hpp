@@ -7,11 +7,10 @@
 
 #include <glm/glm.hpp>
 
+#include "diffraction/illuminant.hpp"
 #include "diffraction/spectral_tables.hpp"
 
 namespace facet::diffraction {
-
-enum class Illuminant { D65, E };  // E: equal energy ("flat")
 
 // Uniform wavelength samples over 360..830 nm with XYZ weights cmf(lambda) S(lambda) h (the
 // trapezoid rule), normalised so that f = 1 gives Y = 1.
@@ -35,6 +34,11 @@ double peak_spacing(const SpectralTables& tables, double lambda_min_nm, double t
 // The samples a diffraction BRDF of these tables needs: the finer of the two spacings above.
 WavelengthSamples diffraction_wavelength_samples(const SpectralTables& tables, double tolerance,
                                                  Illuminant light = Illuminant::D65);
+
+// The XYZ weight per nm at lambda, cmf(lambda) S(lambda) / (the 1 nm sum of ybar S): the density
+// whose integral against f(lambda) the sums of wavelength_samples approximate. A Monte Carlo
+// estimate with lambda uniform on 360..830 nm weighs f(lambda) by 470 nm times this.
+glm::dvec3 xyz_density(double lambda_nm, Illuminant light = Illuminant::D65);
 
 // sum_i f(lambda_i) weight_i, as linear sRGB (shaders/lib/spectral_srgb.glsl).
 glm::dvec3 integrate_linear_srgb(const WavelengthSamples& samples, const std::function<double(double)>& f);

@@ -20,6 +20,8 @@ void validate(const TableRange& range) {
     throw Error("diffraction tables: need 0 < lambda_min_nm <= lambda_max_nm");
   if (!(range.w_max > 0.0 && range.w_max <= 2.0)) throw Error("diffraction tables: w_max must lie in (0, 2]");
   if (!(range.tolerance > 0.0 && range.tolerance < 1.0)) throw Error("diffraction tables: tolerance must lie in (0, 1)");
+  if (range.terms < 0 || range.terms > kMaxTerms)
+    throw Error("diffraction tables: terms must lie in [0, " + std::to_string(kMaxTerms) + "]");
 }
 
 }  // namespace
@@ -64,7 +66,7 @@ SpectralTables build_spectral_tables(const Grating& grating, const TableRange& r
   for (double h : grating.height_nm) spread = std::max(spread, std::abs(h - t.mean_nm));
   t.hs_nm = spread > 0.0 ? spread : 1.0;  // a flat patch: any unit works, every H_n>0 is 0
   t.x_max = (kTwoPi / range.lambda_min_nm) * range.w_max * spread;
-  t.N = taylor_term_count(t.x_max, range.tolerance);
+  t.N = range.terms > 0 ? range.terms : taylor_term_count(t.x_max, range.tolerance);
   t.stored_terms = t.N;
   t.r = window_radius(t.period_nm, t.sigma_nm, range.tolerance);
   // |u|, |v| <= 2, so k u reaches bin 2 T / lambda_min; the window adds r bins. Beyond the Nyquist

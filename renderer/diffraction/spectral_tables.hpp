@@ -13,9 +13,11 @@
 namespace facet::diffraction {
 
 using glm::ivec4;
+using glm::uvec4;
 using glm::vec4;
 #include "layout/diffraction_layout.glsl"
 static_assert(sizeof(DiffractionTableInfo) == 32);
+static_assert(sizeof(GpuDiffractionMaterial) == 160);
 
 // What the tables must cover, and how accurately.
 struct TableRange {
@@ -23,6 +25,7 @@ struct TableRange {
   double lambda_max_nm = 780.0;
   double w_max = 2.0;         // largest |w| = cos theta_i + cos theta_r in use (2 covers every pair)
   double tolerance = 1e-4;    // Taylor remainder and window truncation, relative to |P| <= A
+  int terms = 0;              // Taylor terms to store and use; 0: the fewest that meet the tolerance
 };
 
 // Smallest N with x^N / N! <= tolerance: the Lagrange bound of sum_{n<N} (ix)^n/n! against e^{ix},

@@ -27,22 +27,33 @@ int tile_count(int width, int height, int tile_size) {
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size)
     : scene_(&scene),
       tile_size_(tile_size > 0 ? tile_size : throw Error("tile size must be positive")),
-      buffers_(upload_scene(context, scene)),
+      buffers_(upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable)),
+      diffraction_(upload_diffraction(context, scene, method.diffraction,
+                                      method.samples_per_axis * method.samples_per_axis)),
       pixels_(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size),
       kernel_(context, {.name = "render_direct",
                         .spirv = render_direct_spv,
-                        .buffer_count = static_cast<uint32_t>(buffers_.bindings(pixels_).size()),
+                        .buffer_count = static_cast<uint32_t>(bindings().size()),
                         .push_constant_bytes = sizeof(GpuTile),
                         .specialization = {{0, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
                                            {1, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
                                            {2, static_cast<uint32_t>(method.texture)},
-                                           {3, static_cast<uint32_t>(method.samples_per_axis)}}}) {}
+                                           {3, static_cast<uint32_t>(method.samples_per_axis)},
+                                           {4, uses<DiffractionMaterial>(scene) ? 1u : 0u},
+                                           {5, static_cast<uint32_t>(diffraction_.method)},
+                                           {6, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u}}}) {}
+
+std::vector<const vk::Buffer*> DirectPass::bindings() const {
+  std::vector<const vk::Buffer*> all = buffers_.bindings(pixels_);
+  for (const vk::Buffer* b : diffraction_.bindings()) all.push_back(b);
+  return all;
+}
 
 Image DirectPass::render(const Camera& camera, int width, int height, RenderStats* stats,
                          const TileProgress& progress) {
   if (width <= 0 || height <= 0) throw Error("image size must be positive");
   buffers_.set_camera(*scene_, camera, width, height);
-  const std::vector<const vk::Buffer*> bindings = buffers_.bindings(pixels_);
+  const std::vector<const vk::Buffer*> bindings = this->bindings();
   Image image(width, height);
   std::vector<vec4> tile_rgba(static_cast<size_t>(tile_size_) * tile_size_);
   RenderStats local;

@@ -4,6 +4,7 @@
 
 #include <functional>
 
+#include "gpu/diffraction_upload.hpp"
 #include "gpu/render_method.hpp"
 #include "gpu/scene_upload.hpp"
 #include "image/image.hpp"
@@ -40,10 +41,16 @@ class DirectPass {
   Image render(const Camera& camera, int width, int height, RenderStats* stats = nullptr,
                const TileProgress& progress = {});
 
+  // The diffraction method, wavelength and Taylor-term counts this pass renders with (metadata).
+  const DiffractionBuffers& diffraction() const { return diffraction_; }
+
  private:
+  std::vector<const vk::Buffer*> bindings() const;  // scene buffers, pixels, diffraction buffers
+
   const Scene* scene_;
   int tile_size_;
   SceneBuffers buffers_;
+  DiffractionBuffers diffraction_;
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range
   vk::Kernel kernel_;
 };

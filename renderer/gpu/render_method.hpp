@@ -4,16 +4,22 @@
 //   colormip   MIP-map the colour-mapped texture (right for static textures)
 //   ss:K       K x K stratified rays per pixel of `naive` (K in 1..16)
 //   filtered   the footprint's Gaussian of texture values integrated against the colour map
+//   filtered:table   the same Gaussian looked up in the colour map's prefiltered table T(mu, sigma)
+//   diffraction:M    `naive`, with every diffraction material rendered by method M (spectral,
+//                    preintegrated, orders; diffraction/diffraction_method.hpp)
 #pragma once
 
 #include <string>
 
+#include "diffraction/prepared_diffraction.hpp"
+
 namespace facet::gpu {
 
 struct RenderMethod {
-  enum class Texture { Naive = 0, Mip = 1, Colormip = 2, Filtered = 3 };
+  enum class Texture { Naive = 0, Mip = 1, Colormip = 2, Filtered = 3, FilteredTable = 4 };
   Texture texture = Texture::Naive;
   int samples_per_axis = 1;
+  diffraction::DiffractionSettings diffraction{};  // wavelength / Taylor-term overrides of diffraction materials
 
   // Throws facet::Error naming the known methods for anything else.
   static RenderMethod parse(const std::string& text);

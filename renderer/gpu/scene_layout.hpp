@@ -19,6 +19,6 @@ static_assert(sizeof(GpuTriangle) == 144);
 static_assert(sizeof(GpuBvhNode) == 32);
 static_assert(sizeof(GpuMaterial) == 64);
 static_assert(sizeof(GpuTextureLevel) == 16);
-static_assert(sizeof(GpuColormap) == 32);
+static_assert(sizeof(GpuColormap) == 64);
 static_assert(sizeof(GpuTile) == 16);
 }  // namespace facet::gpu

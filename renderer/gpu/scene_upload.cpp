@@ -9,6 +9,7 @@
 
 #include "common/error.hpp"
 #include "scene/bvh.hpp"
+#include "gpu/microsurface_upload.hpp"
 #include "gpu/texture_upload.hpp"
 #include "scene/camera_frame.hpp"
 #include "scene/plane_frame.hpp"
@@ -66,12 +67,7 @@ void SceneBuffers::set_camera(const Scene& scene, const Camera& camera, int widt
   globals.upload(&g, sizeof(g));
 }
 
-SceneBuffers upload_scene(vk::Context& context, const Scene& scene) {
-  // Microsurfaces need the filtered microsurface pass (issue 6): a clear refusal, never a crash.
-  for (size_t i = 0; i < scene.materials.size(); ++i)
-    if (std::holds_alternative<MicrosurfaceMaterial>(scene.materials[i]))
-      throw Error("material '" + scene.material_names[i] + "' (" + material_type_name(scene.materials[i]) +
-                  ") is not supported by the GPU renderer yet; use facet reference");
+SceneBuffers upload_scene(vk::Context& context, const Scene& scene, bool colormap_tables) {
   std::vector<GpuPlane> planes;
   for (const Plane& p : scene.planes) {
     const PlaneFrame frame = plane_frame(p);
@@ -83,6 +79,7 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene) {
   for (const Sphere& s : scene.spheres) spheres.push_back({to_vec4(s.center, s.radius), uvec4(s.material)});
   TextureData textures;
   std::vector<GpuMaterial> materials;
+  uint32_t diffraction_index = 0;  // the order of upload_diffraction (gpu/diffraction_upload.hpp)
   for (const Material& material : scene.materials)
     materials.push_back(std::visit(
         [&](const auto& m) -> GpuMaterial {
@@ -92,22 +89,28 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene) {
           else if constexpr (std::is_same_v<M, MicroflakeMaterial>)
             return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_MICROFLAKE, static_cast<uint>(m.ndf), 0, 0),
                     vec4(static_cast<float>(m.param), 0, 0, 0), uvec4(0)};
+          else if constexpr (std::is_same_v<M, DiffractionMaterial>)
+            return {to_vec4(m.base_albedo), uvec4(FACET_MATERIAL_DIFFRACTION, diffraction_index++, 0, 0), vec4(0),
+                    uvec4(0)};
           else if constexpr (std::is_same_v<M, ColormapTextureMaterial>)
             return {vec4(1), uvec4(FACET_MATERIAL_COLORMAP_TEXTURE, 0, 0, 0), vec4(0),
-                    add_colormap_texture(textures, m)};
+                    add_colormap_texture(textures, m, colormap_tables)};
+          else if constexpr (std::is_same_v<M, MicrosurfaceMaterial>)
+            return add_microsurface(textures, m);
           else
-            return {};  // refused above
+            static_assert(sizeof(M) == 0, "every material kind needs its GPU record");
         },
         material));
 
   Bvh bvh = build_bvh(scene.meshes);
   std::vector<GpuBvhNode> nodes(bvh.nodes.size());
   static_assert(sizeof(BvhNode) == sizeof(GpuBvhNode));
-  std::memcpy(nodes.data(), bvh.nodes.data(), nodes.size() * sizeof(GpuBvhNode));
+  if (!nodes.empty())  // a scene without meshes has no nodes; memcpy from null is undefined even for 0 bytes
+    std::memcpy(nodes.data(), bvh.nodes.data(), nodes.size() * sizeof(GpuBvhNode));
   std::vector<GpuTriangle> triangles = flatten_triangles(scene, bvh);
 
   const GpuGlobals globals{};  // the camera block is written per frame by set_camera
-  return SceneBuffers{
+  SceneBuffers buffers{
       vk::Buffer::from(context, std::span<const GpuGlobals>(&globals, 1)),
       vk::Buffer::from(context, std::span<const GpuPlane>(planes)),
       vk::Buffer::from(context, std::span<const GpuSphere>(spheres)),
@@ -120,6 +123,8 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene) {
       vk::Buffer::from(context, std::span<const vec4>(textures.colormap_points)),
       uvec4(planes.size(), spheres.size(), nodes.size(), triangles.size()),
   };
+  build_gpu_mips(context, buffers.texels, textures);
+  return buffers;
 }
 
 }  // namespace facet::gpu

@@ -30,6 +30,7 @@ struct SceneBuffers {
   void set_camera(const Scene& scene, const Camera& camera, int width, int height);
 };
 
-SceneBuffers upload_scene(vk::Context& context, const Scene& scene);
+// colormap_tables: also build and upload each colour map's prefiltered table (`filtered:table`).
+SceneBuffers upload_scene(vk::Context& context, const Scene& scene, bool colormap_tables = false);
 
 }  // namespace facet::gpu

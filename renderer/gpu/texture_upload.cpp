@@ -1,52 +1,94 @@
 #include "gpu/texture_upload.hpp"
 
+#include <algorithm>
+
+#include "gpu/mip_builder.hpp"
 #include "precompute/moment_mips.hpp"
 
 namespace facet::gpu {
 
 namespace {
 
-// Appends a box-filtered MIP chain (precompute::build_moment_mips) of `channels` (<= 4) values per
-// texel as vec4 texels; returns the index of its first level record.
-uint append_mips(TextureData& data, int width, int height, int channels, std::vector<double> level0) {
-  const precompute::MomentMips mips = precompute::build_moment_mips(width, height, channels, std::move(level0));
-  const uint first = static_cast<uint>(data.levels.size());
-  for (int l = 0; l < static_cast<int>(mips.levels.size()); ++l) {
-    const precompute::MomentLevel& level = mips.levels[l];
-    data.levels.push_back({uvec4(data.texels.size(), level.width, level.height, 0)});
-    for (int y = 0; y < level.height; ++y)
-      for (int x = 0; x < level.width; ++x) {
-        const double* texel = mips.texel(l, x, y);
-        vec4 v(0.0f);
-        for (int c = 0; c < channels; ++c) v[c] = static_cast<float>(texel[c]);
-        data.texels.push_back(v);
-      }
-  }
-  return first;
+std::vector<vec4> to_vec4_texels(const std::vector<double>& values, int channels) {
+  std::vector<vec4> texels(values.size() / static_cast<size_t>(channels), vec4(0.0f));
+  for (size_t i = 0; i < texels.size(); ++i)
+    for (int c = 0; c < channels; ++c) texels[i][c] = static_cast<float>(values[i * channels + c]);
+  return texels;
 }
 
 }  // namespace
 
-uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material) {
-  const assets::ScalarField& field = *material.texture;
-  std::vector<double> moments(2 * field.values.size()), colours(3 * field.values.size());
-  for (size_t i = 0; i < field.values.size(); ++i) {
-    const double t = field.values[i];
-    moments[2 * i] = t;
-    moments[2 * i + 1] = t * t;
-    const glm::dvec3 c = material.colormap.at(t);
-    for (int k = 0; k < 3; ++k) colours[3 * i + k] = c[k];
+uint append_mip_chain(TextureData& data, int width, int height, std::span<const vec4> level0) {
+  const uint first = static_cast<uint>(data.levels.size());
+  const std::vector<glm::uvec2> sizes = mip_chain_sizes(width, height);
+  for (uint l = 0; l < sizes.size(); ++l) {
+    const glm::uvec2 size = sizes[l];
+    data.levels.push_back({uvec4(data.texels.size(), size.x, size.y, l)});
+    data.texels.resize(data.texels.size() + static_cast<size_t>(size.x) * size.y, vec4(0.0f));
   }
-  const uint first_moment = append_mips(data, field.width, field.height, 2, std::move(moments));
-  const uint moment_levels = static_cast<uint>(data.levels.size()) - first_moment;
-  const uint first_colour = append_mips(data, field.width, field.height, 3, std::move(colours));
+  std::copy(level0.begin(), level0.end(), data.texels.begin() + data.levels[first].info.x);
+  data.gpu_chains.emplace_back(first, sizes.size());
+  return first;
+}
 
+double build_gpu_mips(vk::Context& context, const vk::Buffer& texels, const TextureData& data) {
+  if (data.gpu_chains.empty()) return 0.0;
+  MipBuilder builder(context);
+  double gpu_ms = 0.0;
+  for (const glm::uvec2 chain : data.gpu_chains)
+    gpu_ms += builder.build(texels, std::span<const GpuTextureLevel>(data.levels).subspan(chain.x, chain.y));
+  return gpu_ms;
+}
+
+double colormap_table_sigma_floor(const Colormap& map) {
+  if (map.interpolation() != Colormap::Interpolation::Steps) return 0.0;
+  return 0.01 * (map.domain().y - map.domain().x) * (map.positions().back() - map.positions().front());
+}
+
+precompute::PrefilteredColormap build_colormap_table(const ColormapTextureMaterial& material) {
   const Colormap& map = material.colormap;
-  data.colormaps.push_back({uvec4(data.colormap_points.size(), map.positions().size(),
-                                  map.interpolation() == Colormap::Interpolation::Steps ? 1 : 0, 0),
-                            vec4(static_cast<float>(map.domain().x), static_cast<float>(map.domain().y), 0, 0)});
+  const auto [lo, hi] = std::minmax_element(material.texture->values.begin(), material.texture->values.end());
+  precompute::PrefilteredColormapOptions options;
+  options.tolerance = kColormapTableTolerance;
+  options.sigma_max = 0.5 * (*hi - *lo);  // 0 (a constant texture): the builder's default
+  options.sigma_floor = colormap_table_sigma_floor(map);
+  return precompute::build_prefiltered_colormap(map, options);
+}
+
+GpuColormap append_colormap_points(TextureData& data, const Colormap& map) {
+  const GpuColormap record{uvec4(data.colormap_points.size(), map.positions().size(),
+                                 map.interpolation() == Colormap::Interpolation::Steps ? 1 : 0, 0),
+                           vec4(static_cast<float>(map.domain().x), static_cast<float>(map.domain().y), 0, 0),
+                           uvec4(0), vec4(0)};
   for (size_t i = 0; i < map.positions().size(); ++i)
     data.colormap_points.push_back(vec4(glm::vec3(map.colours()[i]), static_cast<float>(map.positions()[i])));
+  return record;
+}
+
+uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material, bool with_table) {
+  const assets::ScalarField& field = *material.texture;
+  std::vector<double> colours(3 * field.values.size());
+  for (size_t i = 0; i < field.values.size(); ++i) {
+    const glm::dvec3 c = material.colormap.at(field.values[i]);
+    for (int k = 0; k < 3; ++k) colours[3 * i + k] = c[k];
+  }
+  const uint first_moment = append_mip_chain(
+      data, field.width, field.height,
+      to_vec4_texels(precompute::scalar_moment_level0(field), precompute::kScalarChannels));
+  const uint moment_levels = static_cast<uint>(data.levels.size()) - first_moment;
+  const uint first_colour = append_mip_chain(data, field.width, field.height, to_vec4_texels(colours, 3));
+
+  const Colormap& map = material.colormap;
+  GpuColormap gpu_map = append_colormap_points(data, map);
+  if (with_table) {
+    const precompute::PrefilteredColormap table = build_colormap_table(material);
+    const kernels::f32::ColormapTableGrid grid = table.grid_f32();
+    gpu_map.table = uvec4(data.texels.size(), grid.mu_count, grid.sigma_count, 0);
+    gpu_map.table_range = vec4(grid.mu_min, grid.mu_max, grid.sigma_max, static_cast<float>(colormap_table_sigma_floor(map)));
+    const std::vector<glm::vec4> rgba = table.rgba_f32();
+    data.texels.insert(data.texels.end(), rgba.begin(), rgba.end());
+  }
+  data.colormaps.push_back(gpu_map);
   return uvec4(first_moment, moment_levels, first_colour, data.colormaps.size() - 1);
 }
 

@@ -1,13 +1,18 @@
 // The colour-mapped textures of a scene as GPU data: per texture a MIP chain of moments
-// (E[t], E[t^2]) and a MIP chain of the colour-mapped texture (for the `colormip` baseline), both
-// box-filtered by precompute::build_moment_mips, and
-// the colour maps as control points (layouts in shaders/layout/scene_layout.glsl).
+// (E[t], E[t^2], within-texel variance) and a MIP chain of the colour-mapped texture (for the
+// `colormip` baseline), level 0 computed on the CPU and the coarser levels box-filtered on the GPU
+// (gpu/mip_builder.hpp); the colour maps as control points and, for `filtered:table`, their
+// prefiltered tables (layouts in shaders/layout/scene_layout.glsl).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "gpu/scene_layout.hpp"
+#include "precompute/prefiltered_colormap.hpp"
 #include "scene/scene.hpp"
+#include "vk/buffer.hpp"
+#include "vk/context.hpp"
 
 namespace facet::gpu {
 
@@ -16,10 +21,37 @@ struct TextureData {
   std::vector<vec4> texels;
   std::vector<GpuColormap> colormaps;
   std::vector<vec4> colormap_points;  // linear rgb, position
+  std::vector<glm::uvec2> gpu_chains;  // first level record, level count: filled by build_gpu_mips
 };
 
-// Appends the MIP chains of `material` and its colour map; returns the GpuMaterial::texture field
-// (first moment level, level count, first colour-MIP level, colour map index).
-uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material);
+// Appends a MIP chain of vec4 texels: level 0 (width * height texels, row-major) as given and room
+// for the coarser levels (mip_chain_sizes), which build_gpu_mips box-filters. Level records hold
+// (offset, width, height, index in the chain), as texel_quad (render/texture_sampling.glsl) reads
+// them. Returns the index of its first level record.
+uint append_mip_chain(TextureData& data, int width, int height, std::span<const vec4> level0);
+
+// Builds every chain of data.gpu_chains in `texels`, the uploaded data.texels. Returns the GPU ms.
+double build_gpu_mips(vk::Context& context, const vk::Buffer& texels, const TextureData& data);
+
+// Per colour channel: about one 8-bit step.
+constexpr double kColormapTableTolerance = 4e-3;
+
+// A step map's table meets the tolerance only above a sigma floor (bilinear interpolation cannot
+// follow a jump as sigma -> 0): 1% of its control-point span, in texture values. 0 for linear maps.
+double colormap_table_sigma_floor(const Colormap& map);
+
+// The prefiltered table of a material's colour map as `filtered:table` uses it: kColormapTableTolerance,
+// sigma up to half the texture's value range (no footprint's standard deviation can exceed it) and
+// colormap_table_sigma_floor.
+precompute::PrefilteredColormap build_colormap_table(const ColormapTextureMaterial& material);
+
+// Appends the control points of `map` to data.colormap_points; returns its record (no table), for
+// the caller to complete and push to data.colormaps.
+GpuColormap append_colormap_points(TextureData& data, const Colormap& map);
+
+// Appends the MIP chains of `material` and its colour map (with its prefiltered table when
+// `with_table`); returns the GpuMaterial::texture field (first moment level, level count, first
+// colour-MIP level, colour map index).
+uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material, bool with_table = false);
 
 }  // namespace facet::gpu

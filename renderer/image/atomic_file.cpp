@@ -6,9 +6,11 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "common/interrupt.hpp"
 #include "image/io_error.hpp"
 
 namespace facet {
@@ -38,10 +40,12 @@ void write_file_atomically(const std::filesystem::path& destination, const std::
   temporary += ".tmp-XXXXXX";
   std::FILE* file = nullptr;
   bool created = false;
+  std::optional<PendingFile> pending;  // removed by the SIGINT/SIGTERM handler if interrupted
   try {
     const int fd = ::mkstemp(temporary.data());
     if (fd < 0) throw errno_error("cannot create a temporary file in " + directory.string());
     created = true;
+    pending.emplace(temporary);
     // mkstemp creates 0600; an output image should be readable like any other file.
     ::fchmod(fd, 0644);
     file = ::fdopen(fd, "wb");

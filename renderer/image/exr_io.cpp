@@ -14,9 +14,12 @@
 #include <OpenEXR/ImfTestFile.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "image/atomic_file.hpp"
@@ -109,6 +112,17 @@ std::string channel_names(const Imf::ChannelList& channels) {
   return names.empty() ? "none" : names;
 }
 
+// The data window's size, refused before anything is allocated if a side exceeds kMaxImageFileSide
+// (computed in 64 bits: a hostile header's corners may be anywhere in the int range).
+std::pair<int, int> checked_size(const Imath::Box2i& window) {
+  const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
+  const std::int64_t height = std::int64_t{window.max.y} - window.min.y + 1;
+  if (width < 1 || height < 1 || width > kMaxImageFileSide || height > kMaxImageFileSide)
+    throw std::runtime_error("data window " + std::to_string(width) + " x " + std::to_string(height) +
+                             " is outside 1.." + std::to_string(kMaxImageFileSide) + " per side");
+  return {static_cast<int>(width), static_cast<int>(height)};
+}
+
 // Opens `path` after the checks that give a clearer message than OpenEXR's own, and turns any
 // failure of `read` into one facet::Error naming the file.
 template <typename Read>
@@ -119,6 +133,9 @@ auto read_with(const std::filesystem::path& path, Read read) {
   if (!Imf::isOpenExrFile(path.c_str())) throw io_error(path, "not an OpenEXR file");
   try {
     Imf::InputFile input(path.c_str());
+    // Before any pixel is allocated: a file missing chunks of its data window (truncated, or a
+    // header promising more than the file holds) is refused.
+    if (!input.isComplete()) throw std::runtime_error("is incomplete: chunks of its data window are missing");
     return read(input);
   } catch (const std::exception& e) {
     throw io_error(path, e.what());
@@ -159,7 +176,8 @@ void write_exr(const std::filesystem::path& path, const Image& image, const ExrM
 Image read_exr(const std::filesystem::path& path, ExrMetadata* metadata) {
   return read_with(path, [&](Imf::InputFile& input) {
     const Imath::Box2i window = input.header().dataWindow();
-    Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    const auto [width, height] = checked_size(window);
+    Image image(width, height);
     const Imf::ChannelList& channels = input.header().channels();
     const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
     if (!rgb && !channels.findChannel("Y"))
@@ -182,7 +200,8 @@ Image read_exr(const std::filesystem::path& path, ExrMetadata* metadata) {
 ScalarImage read_exr_scalar(const std::filesystem::path& path, const std::string& channel) {
   return read_with(path, [&](Imf::InputFile& input) {
     const Imath::Box2i window = input.header().dataWindow();
-    ScalarImage image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    const auto [width, height] = checked_size(window);
+    ScalarImage image(width, height);
     const Imf::ChannelList& channels = input.header().channels();
     if (!channels.findChannel(channel))
       throw std::runtime_error("has no channel '" + channel + "' (has " + channel_names(channels) + ")");

@@ -9,6 +9,10 @@
 
 namespace facet {
 
+// The largest width or height of an image file facet reads (EXR, PNG): checked against the header
+// before any pixel is allocated (docs/limits.md). 16384^2 RGB floats are 3 GiB.
+inline constexpr int kMaxImageFileSide = 16384;
+
 // Scene-linear RGB, 3 floats per pixel.
 struct Image {
   int width = 0, height = 0;

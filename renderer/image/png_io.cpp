@@ -75,6 +75,8 @@ bool read_layout(png_structp png, png_infop info, std::FILE* file, PngLayout* la
   if (setjmp(png_jmpbuf(png))) return false;
   png_init_io(png, file);
   png_set_sig_bytes(png, 8);
+  // libpng refuses larger headers in png_read_info, before the rows are allocated.
+  png_set_user_limits(png, kMaxImageFileSide, kMaxImageFileSide);
   png_read_info(png, info);
   const int color_type = png_get_color_type(png, info);
   if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
@@ -137,6 +139,15 @@ PngImage read_png(const std::filesystem::path& path) {
   PngLayout layout;
   if (!read_layout(reader.png, reader.info, file.get(), &layout))
     throw io_error(path, std::string("corrupt PNG header: ") + reader.error.text);
+  // Deflate expands at most 1032-fold, and every stored row takes at least 1 filter byte plus 1 bit
+  // per pixel: a header promising more than the file can hold is refused before the rows are
+  // allocated (a 100-byte file must not cost gigabytes).
+  const std::uint64_t least_stored = std::uint64_t{layout.height} * (1 + (std::uint64_t{layout.width} + 7) / 8);
+  const std::uint64_t file_bytes = std::filesystem::file_size(path, ec);
+  if (!ec && least_stored > 1032 * file_bytes)
+    throw io_error(path, "corrupt or truncated PNG data: " + std::to_string(layout.width) + " x " +
+                             std::to_string(layout.height) + " pixels cannot fit in " + std::to_string(file_bytes) +
+                             " bytes");
   std::vector<png_byte> bytes(layout.row_bytes * layout.height);
   std::vector<png_bytep> rows(layout.height);
   for (png_uint_32 y = 0; y < layout.height; ++y) rows[y] = bytes.data() + y * layout.row_bytes;

@@ -13,8 +13,6 @@ namespace {
 // Level-0 texels covered by texel i of a level whose texels span `span` level-0 texels, of `size`.
 int coverage(int i, int span, int size) { return std::min((i + 1) * span, size) - i * span; }
 
-int wrap(long long i, int n) { return static_cast<int>(((i % n) + n) % n); }
-
 // The bilinear reconstruction of the periodic field at (x, y) in texel units (centres at i + 1/2).
 double bilinear(const assets::ScalarField& f, double x, double y) {
   const double sx = x - 0.5, sy = y - 0.5;
@@ -73,7 +71,7 @@ MomentMips build_moment_mips(int width, int height, int channels, std::vector<do
   return mips;
 }
 
-MomentMips scalar_moment_mips(const assets::ScalarField& field) {
+std::vector<double> scalar_moment_level0(const assets::ScalarField& field) {
   std::vector<double> level0;
   level0.reserve(static_cast<std::size_t>(field.width) * field.height * kScalarChannels);
   for (int y = 0; y < field.height; ++y)
@@ -81,7 +79,11 @@ MomentMips scalar_moment_mips(const assets::ScalarField& field) {
       const double t = field.at(x, y);
       level0.insert(level0.end(), {t, t * t, within_texel_variance(field, x, y)});
     }
-  return build_moment_mips(field.width, field.height, kScalarChannels, std::move(level0));
+  return level0;
+}
+
+MomentMips scalar_moment_mips(const assets::ScalarField& field) {
+  return build_moment_mips(field.width, field.height, kScalarChannels, scalar_moment_level0(field));
 }
 
 MomentMips lean_moment_mips(const assets::ScalarField& heights, double texel_size) {
@@ -108,21 +110,17 @@ glm::dvec3 trilinear_scalar_channels(const MomentMips& mips, glm::dvec2 uv, doub
   const int l1 = std::min(l0 + 1, last);
   const double f = l - l0;
   auto bilinear_level = [&](int level) {
-    // Texels of level `level` as a regular grid of 2^level level-0 texels (exact when the size is a
-    // multiple of 2^level; otherwise the last, partial texel is treated as full).
+    // Texel centres of odd-size levels as the GPU places them (shaders/lib/mip_grid.glsl).
     const MomentLevel& m = mips.levels[static_cast<std::size_t>(level)];
-    const double scale = std::ldexp(1.0, -level);
-    const double u = uv.x - std::floor(uv.x), v = uv.y - std::floor(uv.y);  // period 1; NaN stays NaN
-    const double sx = std::isfinite(u) ? u * mips.levels[0].width * scale - 0.5 : 0.0;
-    const double sy = std::isfinite(v) ? v * mips.levels[0].height * scale - 0.5 : 0.0;
-    const double fx = std::floor(sx), fy = std::floor(sy);
-    const long long i = static_cast<long long>(fx), j = static_cast<long long>(fy);
-    const double wx = sx - fx, wy = sy - fy;
-    auto at = [&](long long x, long long y) {
-      const double* t = mips.texel(level, wrap(x, m.width), wrap(y, m.height));
+    const int span = 1 << level;
+    const kernels::f64::MipAxisTaps x = kernels::f64::mip_axis_taps(uv.x, mips.levels[0].width, span, m.width);
+    const kernels::f64::MipAxisTaps y = kernels::f64::mip_axis_taps(uv.y, mips.levels[0].height, span, m.height);
+    auto at = [&](int i, int j) {
+      const double* t = mips.texel(level, i, j);
       return glm::dvec3(t[kScalarMean], t[kScalarSecondMoment], t[kScalarWithinVariance]);
     };
-    return (1 - wy) * ((1 - wx) * at(i, j) + wx * at(i + 1, j)) + wy * ((1 - wx) * at(i, j + 1) + wx * at(i + 1, j + 1));
+    return (1 - y.w1) * ((1 - x.w1) * at(x.i0, y.i0) + x.w1 * at(x.i1, y.i0)) +
+           y.w1 * ((1 - x.w1) * at(x.i0, y.i1) + x.w1 * at(x.i1, y.i1));
   };
   return (1 - f) * bilinear_level(l0) + f * bilinear_level(l1);
 }

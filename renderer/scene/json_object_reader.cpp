@@ -17,7 +17,12 @@ bool is_finite_number(const nlohmann::json& v) { return v.is_number() && std::is
 std::string describe_json(const nlohmann::json& value) {
   // Nesting is bounded by the loader (kMaxJsonDepth), so dump() cannot recurse deeply.
   std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  if (text.size() > kMaxDescribedLength) text = text.substr(0, kMaxDescribedLength) + "...";
+  if (text.size() > kMaxDescribedLength) {
+    // Cut before a UTF-8 continuation byte, so the message stays valid UTF-8 (JSON outputs need it).
+    size_t cut = kMaxDescribedLength;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    text = text.substr(0, cut) + "...";
+  }
   return text;
 }
 

@@ -17,6 +17,9 @@
 #include <glm/glm.hpp>
 
 #include "assets/scalar_field.hpp"
+#include "diffraction/diffraction_method.hpp"
+#include "diffraction/grating.hpp"
+#include "diffraction/illuminant.hpp"
 #include "scene/colormap.hpp"
 
 namespace facet {
@@ -28,6 +31,23 @@ struct Camera {
   double fov_y_deg = 45.0;  // full vertical field of view
   int width = 640;
   int height = 360;
+};
+
+// One keyframe of a camera path: the pose the camera takes at `frame`.
+struct CameraKey {
+  int frame = 0;
+  glm::dvec3 position{0.0};
+  glm::dvec3 target{0.0};
+  double fov_y_deg = 45.0;
+};
+
+// An animation of the camera (scene/camera_path.hpp): `frames` frames numbered 0..frames-1, poses
+// interpolated between keys sorted by frame (up, width and height stay those of Scene::camera).
+struct CameraPath {
+  enum class Interpolation { Linear, Smooth };
+  int frames = 1;
+  Interpolation interpolation = Interpolation::Linear;
+  std::vector<CameraKey> keys;
 };
 
 struct DirectionalLight {
@@ -81,10 +101,25 @@ struct MicrosurfaceMaterial {
   std::optional<BeckmannSpecular> specular;
 };
 
-// One alternative per material kind; later issues add theirs here.
-using Material = std::variant<LambertMaterial, MicroflakeMaterial, ColormapTextureMaterial, MicrosurfaceMaterial>;
+// A diffraction grating tiled over the surface (Stam's BRDF, docs/diffraction.md), integrated over
+// wavelength against the CIE observer and `illuminant`, over a Lambertian base. The grating's y axis
+// (its ridges) follows the surface tangent dp/du, its height the normal. Counts of 0 are chosen from
+// `tolerance`; the spectral tables are built by the renderer (diffraction/prepared_diffraction.hpp).
+struct DiffractionMaterial {
+  std::shared_ptr<const diffraction::Grating> grating;
+  double tolerance = 1e-3;
+  diffraction::Illuminant illuminant = diffraction::Illuminant::D65;
+  int wavelengths = 0;  // wavelength samples over 360..830 nm
+  int taylor = 0;       // Taylor terms
+  glm::dvec3 base_albedo{0.0};
+  diffraction::DiffractionMethod method = diffraction::DiffractionMethod::Spectral;  // `--diffraction` overrides
+};
 
-// "lambert", "microflake", "colormap_texture", "microsurface": for messages.
+// One alternative per material kind; later issues add theirs here.
+using Material = std::variant<LambertMaterial, MicroflakeMaterial, ColormapTextureMaterial, MicrosurfaceMaterial,
+                              DiffractionMaterial>;
+
+// "lambert", "microflake", "colormap_texture", "microsurface", "diffraction": for messages.
 const char* material_type_name(const Material& material);
 
 // A plane through `point` with unit normal `normal`; infinite unless `size` is given.
@@ -123,6 +158,7 @@ struct Mesh {
 struct Scene {
   std::filesystem::path source;  // the scene file, for metadata and relative paths
   Camera camera;
+  std::optional<CameraPath> camera_path;  // frames of an animation; absent: one frame, `camera`
   DirectionalLight light;
   glm::dvec3 ambient{0.0};     // constant RGB irradiance added to every lit point
   glm::dvec3 background{0.0};  // RGB radiance of rays that hit nothing

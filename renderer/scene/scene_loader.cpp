@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "scene/camera_path.hpp"
+#include "scene/diffraction_material_reader.hpp"
 #include "scene/gltf_loader.hpp"
 #include "scene/json_object_reader.hpp"
 #include "scene/plane_frame.hpp"
@@ -36,14 +38,9 @@ Camera read_camera(JsonObjectReader r) {
   c.width = r.integer_in("width", 1, kMaxImageSide, c.width);
   c.height = r.integer_in("height", 1, kMaxImageSide, c.height);
   r.finish();
-
-  const glm::dvec3 view = c.target - c.position;
-  if (!(glm::length(view) > 1e-12 * std::max(1.0, glm::length(c.position)))) {
-    r.fail("target", "must differ from camera.position");
-  }
-  // sin of the angle between up and the view direction; 1e-6 rad leaves a usable basis.
-  const double sin_angle = glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up)));
-  if (!(sin_angle > 1e-6)) r.fail("up", "must not be parallel to the view direction");
+  if (const char* defect = camera_defect(c))
+    r.fail(defect, defect == std::string("target") ? "must differ from camera.position"
+                                                   : "must not be parallel to the view direction");
   return c;
 }
 
@@ -82,7 +79,8 @@ Material read_material(JsonObjectReader r, const std::filesystem::path& base_dir
   }
   if (type == "colormap_texture") return read_colormap_texture_material(r, base_dir);
   if (type == "microsurface") return read_microsurface_material(r, base_dir);
-  r.fail("type", "must be one of: lambert, microflake, colormap_texture, microsurface");
+  if (type == "diffraction") return read_diffraction_material(r, base_dir);
+  r.fail("type", "must be one of: lambert, microflake, colormap_texture, microsurface, diffraction");
 }
 
 uint32_t read_material_ref(JsonObjectReader& r, const MaterialIndex& materials) {
@@ -214,7 +212,7 @@ std::pair<size_t, size_t> line_and_column(const std::string& text, size_t byte) 
 }  // namespace
 
 const char* material_type_name(const Material& material) {
-  constexpr const char* names[] = {"lambert", "microflake", "colormap_texture", "microsurface"};
+  constexpr const char* names[] = {"lambert", "microflake", "colormap_texture", "microsurface", "diffraction"};
   static_assert(std::variant_size_v<Material> == std::size(names));
   return names[material.index()];
 }
@@ -226,6 +224,8 @@ Scene parse_scene(const Json& document, const std::filesystem::path& source) {
   scene.source = source;
 
   if (top.has("camera")) scene.camera = read_camera(JsonObjectReader(top.value("camera"), file, "camera"));
+  if (top.has("camera_path"))
+    scene.camera_path = read_camera_path(JsonObjectReader(top.value("camera_path"), file, "camera_path"), scene.camera);
   if (top.has("light")) scene.light = read_light(JsonObjectReader(top.value("light"), file, "light"));
   scene.ambient = top.colour("ambient", scene.ambient);
   scene.background = top.colour("background", scene.background);

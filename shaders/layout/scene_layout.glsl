@@ -53,6 +53,9 @@ struct GpuBvhNode {
 #define FACET_MATERIAL_LAMBERT 0u
 #define FACET_MATERIAL_MICROFLAKE 1u
 #define FACET_MATERIAL_COLORMAP_TEXTURE 2u
+#define FACET_MATERIAL_MICROSURFACE 3u  // fields: renderer/gpu/microsurface_upload.hpp
+#define FACET_NO_COLORMAP 0xffffffffu    // a microsurface without this colour-map factor
+#define FACET_MATERIAL_DIFFRACTION 4u  // kind.y: index into diffraction_materials (render/diffraction_shading.glsl)
 
 struct GpuMaterial {
   vec4 albedo;
@@ -66,13 +69,17 @@ struct GpuMaterial {
 // Moment levels hold (E[t], E[t^2], -, -); colour-MIP levels hold (linear RGB of the colour-mapped
 // texture, box-filtered, -).
 struct GpuTextureLevel {
-  uvec4 info;  // offset, width, height, -
+  uvec4 info;  // offset, width, height, index l in its MIP chain (level 0 of the chain: this record - l)
 };
 
-// A colour map: control points (linear RGB, position) colormap_points[first .. first + count).
+// A colour map: control points (linear RGB, position) colormap_points[first .. first + count), and
+// optionally its prefiltered table T(mu, sigma) (lib/colormap_table.glsl) as RGBA texels, entry k at
+// texels[table.x + k], for `filtered:table`.
 struct GpuColormap {
-  uvec4 info;   // first, count, steps (1) or linear (0), -
-  vec4 domain;  // the texture value mapped to position 0 (x) and 1 (y)
+  uvec4 info;         // first, count, steps (1) or linear (0), -
+  vec4 domain;        // the texture value mapped to position 0 (x) and 1 (y)
+  uvec4 table;        // first table texel, mu count I, sigma count J (0: no table), -
+  vec4 table_range;   // mu_min, mu_max, sigma_max (texture values), sigma_floor: below it, the exact filter
 };
 
 // Push constants of the per-pixel passes: the tile of the image this dispatch covers.

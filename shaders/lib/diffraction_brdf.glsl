@@ -91,6 +91,13 @@ struct DiffractionValue {
   real P2;    // <|P(ku, kv)|^2> / A [nm^2], the power-spectrum factor of B.12
 };
 
+// Schlick's reflectance (D.1) at cos theta_h = H.V = sqrt((1 + wi.wr) / 2); it does not depend on lambda.
+inline real diffraction_schlick_reflectance(DiffractionGeometry g, real R0) {
+  real one_minus_cos_h = real(1) - sqrt(real(0.5) * g.one_plus_cos);
+  real one_minus_cos_h2 = one_minus_cos_h * one_minus_cos_h;
+  return R0 + (real(1) - R0) * one_minus_cos_h2 * one_minus_cos_h2 * one_minus_cos_h;
+}
+
 // B.12 with A = pi sigma^2 (the window's area), P = 2 pi sigma^2 S and F^2 = Schlick's
 // reflectance (D.1) at cos theta_h = H.V = sqrt((1 + wi.wr) / 2):
 //   P2   = 4 pi sigma^2 |S|^2
@@ -99,9 +106,7 @@ inline DiffractionValue diffraction_value(DiffractionGeometry g, DiffractionFiel
   real2 S = f.specular + g.w * f.rest;
   real2 S_over_w = f.specular / g.w_resolved + f.rest;
   real P2 = real(4) * FACET_PI * sigma_nm * sigma_nm * dot(S, S);
-  real one_minus_cos_h = real(1) - sqrt(real(0.5) * g.one_plus_cos);
-  real one_minus_cos_h2 = one_minus_cos_h * one_minus_cos_h;
-  real R = R0 + (real(1) - R0) * one_minus_cos_h2 * one_minus_cos_h2 * one_minus_cos_h;
+  real R = diffraction_schlick_reflectance(g, R0);
   real ks = g.k * sigma_nm * g.one_plus_cos;
   real brdf = R * ks * ks * dot(S_over_w, S_over_w) * FACET_INV_PI / (g.cos_i * g.cos_r);
   return DiffractionValue(brdf, P2);

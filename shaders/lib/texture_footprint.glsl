@@ -29,6 +29,7 @@ struct AnisotropicFootprint {
   real lod;
   real taps;
   real2 major;  // the major axis in uv; tap k of n sits at uv + major ((k + 1/2)/n - 1/2)
+  real2 minor;  // the minor axis in uv
 };
 
 inline AnisotropicFootprint anisotropic_footprint(real2 duv_dx, real2 duv_dy, real2 size, real levels, real max_taps) {
@@ -42,9 +43,23 @@ inline AnisotropicFootprint anisotropic_footprint(real2 duv_dx, real2 duv_dy, re
   // Bilinear lookups at level l spread each level texel over a tent two level texels wide, so the
   // level matching a footprint of `width` texels is about log2(width) - 1. The bias was measured:
   // on scenes/colormap_noise_plane.json (320x180 vs a 16x16 reference) biases 0.5 / 1 / 1.5 gave
-  // RMSE 0.031 / 0.025 / 0.036 for colormip and 0.045 / 0.037 / 0.042 for filtered.
+  // RMSE 0.031 / 0.025 / 0.036 for colormip and 0.045 / 0.037 / 0.042 for filtered; with the level-0
+  // variance of linearised_tap_variance, on scenes/colormap_objects.json too (sphere, mesh, head-on
+  // and grazing planes; docs/colormap_filtering.md), 1 stays best.
   real lod = width > real(2) ? log2(width) - real(1) : real(0);
-  return AnisotropicFootprint(clamp(lod, real(0), levels - real(1)), taps, length_x >= length_y ? duv_dx : duv_dy);
+  return AnisotropicFootprint(clamp(lod, real(0), levels - real(1)), taps, length_x >= length_y ? duv_dx : duv_dy,
+                              length_x >= length_y ? duv_dy : duv_dx);
+}
+
+// The variance of the bilinear texture over a tap (a parallelogram with axes a, b in level-0
+// texels, uniformly weighted) from its gradient g at the tap's centre: t ~ t0 + g.(x a + y b) with
+// x, y ~ U(-1/2, 1/2) gives ((g.a)^2 + (g.b)^2) / 12, exact for a linear texture. Used for taps up
+// to 2 texels wide (MIP level 0); wider taps are scaled back to width 2, where trilinear lookups
+// hand over to the moment chain (docs/colormap_filtering.md).
+inline real linearised_tap_variance(real2 g, real2 a, real2 b) {
+  real ga = dot(g, a), gb = dot(g, b);
+  real width2 = max(dot(a, a), dot(b, b));
+  return (ga * ga + gb * gb) / real(12) * min(real(1), real(4) / max(width2, real(1e-30)));
 }
 
 #endif

@@ -4,23 +4,39 @@
 #ifndef FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #define FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #include "lib/colormap_filter.glsl"
+#include "lib/colormap_table.glsl"
+#include "lib/mip_grid.glsl"
 #include "lib/texture_footprint.glsl"
 #include "render/scene_bindings.glsl"
 
 const float kMaxAnisotropicTaps = 8.0;
 
-// Bilinear between texel centres ((i + 1/2)/W, (j + 1/2)/H), periodic (renderer/cpu/material_shading.cpp).
-vec4 sample_level(uint level, vec2 uv) {
+// The four texels around uv at `level` and the bilinear weights of the right (x) and upper (y)
+// ones. Texel centres as lib/mip_grid.glsl places them (exact for odd sizes); info.w is the level's
+// index in its chain (0 for a lone level), whose level 0 is the record `level - info.w`.
+struct TexelQuad {
+  vec4 t00;
+  vec4 t10;
+  vec4 t01;
+  vec4 t11;
+  vec2 f;
+};
+
+TexelQuad texel_quad(uint level, vec2 uv) {
   uvec4 info = texture_levels[level].info;
-  int w = int(info.y), h = int(info.z);
-  vec2 x = uv * vec2(w, h) - 0.5;
-  vec2 cell = floor(x);
-  vec2 f = x - cell;
-  int i0 = int(mod(cell.x, float(w))), j0 = int(mod(cell.y, float(h)));
-  int i1 = (i0 + 1) % w, j1 = (j0 + 1) % h;
-  vec4 t00 = texels[info.x + uint(j0 * w + i0)], t10 = texels[info.x + uint(j0 * w + i1)];
-  vec4 t01 = texels[info.x + uint(j1 * w + i0)], t11 = texels[info.x + uint(j1 * w + i1)];
-  return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+  uvec2 size0 = info.w == 0u ? info.yz : texture_levels[level - info.w].info.yz;
+  int span = 1 << info.w;
+  MipAxisTaps x = mip_axis_taps(uv.x, int(size0.x), span, int(info.y));
+  MipAxisTaps y = mip_axis_taps(uv.y, int(size0.y), span, int(info.z));
+  uint row0 = info.x + uint(y.i0) * info.y, row1 = info.x + uint(y.i1) * info.y;
+  return TexelQuad(texels[row0 + uint(x.i0)], texels[row0 + uint(x.i1)], texels[row1 + uint(x.i0)],
+                   texels[row1 + uint(x.i1)], vec2(x.w1, y.w1));
+}
+
+// Bilinear between texel centres, periodic (at level 0 as renderer/cpu/material_shading.cpp).
+vec4 sample_level(uint level, vec2 uv) {
+  TexelQuad q = texel_quad(level, uv);
+  return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t11, q.f.x), q.f.y);
 }
 
 vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod) {
@@ -39,37 +55,105 @@ vec3 colormap_at(GpuColormap map, float value) {
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
   if (!(t > colormap_points[first].w)) return colormap_points[first].rgb;  // NaN takes the first colour
   if (t >= colormap_points[last].w) return colormap_points[last].rgb;
-  uint i = first;
-  while (colormap_points[i + 1u].w <= t) ++i;
-  vec4 a = colormap_points[i], b = colormap_points[i + 1u];
+  // Bisection for the segment with points[i].w <= t < points[i + 1].w: log2(count) reads (the
+  // microsurface pass looks up 256-point maps at 16-32 nodes per pixel).
+  uint i = first, j = last;
+  while (j - i > 1u) {
+    uint mid = (i + j) / 2u;
+    if (colormap_points[mid].w <= t) i = mid; else j = mid;
+  }
+  vec4 a = colormap_points[i], b = colormap_points[j];
   return map.info.z == 1u ? a.rgb : mix(a.rgb, b.rgb, (t - a.w) / (b.w - a.w));
 }
 
+// colormap_knot(z), skipping its erfcx and exp beyond |z| = 8, where Phi(-|z|) < 7e-16 and
+// G(-|z|) < 1e-17 are far below float resolution: the saturated knot is exact to float there.
+ColormapKnot colormap_knot_or_saturated(float z) {
+  if (z >= 8.0) return ColormapKnot(1.0, 0.0, z, 0.0);
+  if (z <= -8.0) return ColormapKnot(0.0, 1.0, 0.0, -z);
+  return colormap_knot(z);
+}
+
+// The first control point in [first, last] whose position exceeds `position` (last if none).
+uint colormap_first_point_above(uint first, uint last, float position) {
+  uint lo = first, hi = last;  // the answer lies in [lo, hi]; hi = last when no point is above
+  while (lo < hi) {
+    uint mid = (lo + hi) / 2u;
+    if (colormap_points[mid].w > position) hi = mid; else lo = mid + 1u;
+  }
+  return lo;
+}
+
 // E[colormap(t)] for t ~ N(mu, sigma^2) in texture values: the segments and end tails of the map
-// (lib/colormap_filter.glsl), in the map's own parameter.
+// (lib/colormap_filter.glsl), in the map's own parameter. Only the points within 8 sigma of mu and
+// the one beyond on each side are visited (binary searches; the CPU loop likewise skips what is out
+// of reach): outside, every knot is saturated, so the skipped segments and tails contribute 0 to
+// float precision. Each knot is evaluated once and shared by its two segments and the tails.
 vec3 colormap_filtered(GpuColormap map, float mu, float sigma) {
   float scale = 1.0 / (map.domain.y - map.domain.x);
   float m = colormap_position(map, mu), s = sigma * abs(scale);
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
-  vec3 sum = colormap_tail_below_gaussian(colormap_points[first].w, colormap_points[first].rgb, m, s) +
-             colormap_tail_above_gaussian(colormap_points[last].w, colormap_points[last].rgb, m, s);
-  for (uint i = first; i < last; ++i) {
-    vec4 a = colormap_points[i], b = colormap_points[i + 1u];
-    sum += colormap_segment_gaussian(a.w, b.w, a.rgb, map.info.z == 1u ? a.rgb : b.rgb, m, s);
+  float reach = 8.0 * s;
+  uint begin = colormap_first_point_above(first, last, m - reach);
+  begin = begin > first ? begin - 1u : first;
+  uint end = colormap_first_point_above(begin, last, m + reach);
+  vec4 a = colormap_points[begin];
+  float za = colormap_standardize(a.w, m, s);
+  ColormapKnot knot_a = colormap_knot_or_saturated(za);
+  vec3 sum = a.rgb * knot_a.Phi;
+  for (uint i = begin; i < end; ++i) {
+    vec4 b = colormap_points[i + 1u];
+    float zb = colormap_standardize(b.w, m, s);
+    ColormapKnot knot_b = colormap_knot_or_saturated(zb);
+    sum += colormap_segment_from_knots(knot_a, knot_b, za, zb, a.rgb, map.info.z == 1u ? a.rgb : b.rgb);
+    a = b;
+    za = zb;
+    knot_a = knot_b;
   }
-  return sum;
+  return sum + a.rgb * knot_a.Phi_reflected;
 }
 
-// The moments (E[t], E[t^2]) of the texture over an isotropic footprint at `lod`. The finest level
-// counts as variance-free: a footprint within one texel sees the bilinear texture, whose value there
-// is what `naive` samples, so `filtered` equals `naive` under magnification.
-vec2 footprint_moments(uint first, uint count, vec2 uv, float lod) {
+// T(mu, sigma) from the map's prefiltered table (texels from map.table.x; grid and blend math shared
+// with the CPU, lib/colormap_table.glsl).
+vec3 colormap_table_lookup(GpuColormap map, float mu, float sigma) {
+  ColormapTableGrid grid = ColormapTableGrid(map.table_range.x, map.table_range.y, map.table_range.z,
+                                             int(map.table.y), int(map.table.z));
+  ColormapTableTaps taps = colormap_table_taps(grid, mu, sigma);
+  uint i00 = map.table.x + uint(colormap_table_index(grid, taps.i0, taps.j0));
+  uint i01 = i00 + uint(grid.mu_count);
+  return colormap_table_blend(texels[i00].rgb, texels[i00 + 1u].rgb, texels[i01].rgb, texels[i01 + 1u].rgb, taps);
+}
+
+// E[colormap(t)], t ~ N(mu, sigma^2): the table for `filtered:table` (above a step map's sigma floor,
+// below which bilinear interpolation cannot follow a jump), otherwise the exact segment integrals.
+// NaN goes to the table, which clamps it to the grid's low end.
+vec3 colormap_gaussian(GpuColormap map, float mu, float sigma) {
+  if (kTextureMethod == 4u && map.table.z > 0u && !(sigma < map.table_range.w))
+    return colormap_table_lookup(map, mu, sigma);
+  return colormap_filtered(map, mu, sigma);
+}
+
+// (E[t], E[t^2]) of the texture over one tap (axes axis_a, axis_b in level-0 texels) at `lod`
+// (docs/colormap_filtering.md, "Footprint variance"). Level l >= 1: the box-filtered sample moments
+// plus the mean within-texel variance (channel z). Level 0 stands for taps up to 2 texels wide: the
+// bilinear texture there is linearised at the tap (lib/texture_footprint.glsl), so the variance
+// vanishes with the tap and `filtered` tends to `naive` under magnification.
+vec2 footprint_moments(uint first, uint count, vec2 uv, float lod, vec2 axis_a, vec2 axis_b) {
   float l0 = floor(lod);
   uint level = uint(l0);
-  vec4 a = sample_level(first + level, uv);
-  vec4 b = level + 1u < count ? sample_level(first + level + 1u, uv) : a;
-  if (level == 0u) a.y = a.x * a.x;
-  return mix(a.xy, b.xy, lod - l0);
+  vec2 a;
+  if (level == 0u) {
+    TexelQuad q = texel_quad(first, uv);
+    float t = mix(mix(q.t00.x, q.t10.x, q.f.x), mix(q.t01.x, q.t11.x, q.f.x), q.f.y);
+    vec2 gradient = vec2(mix(q.t10.x - q.t00.x, q.t11.x - q.t01.x, q.f.y), mix(q.t01.x - q.t00.x, q.t11.x - q.t10.x, q.f.x));
+    a = vec2(t, t * t + linearised_tap_variance(gradient, axis_a, axis_b));
+  } else {
+    vec4 s = sample_level(first + level, uv);
+    a = vec2(s.x, s.y + s.z);
+  }
+  if (level + 1u >= count || lod == l0) return a;  // integral lod: one level
+  vec4 b = sample_level(first + level + 1u, uv);
+  return mix(a, vec2(b.x, b.y + b.z), lod - l0);
 }
 
 // The albedo of a colour-mapped texture at the hit, by the method of kTextureMethod, averaged over
@@ -83,6 +167,8 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy) {
       anisotropic_footprint(duv_dx, duv_dy, vec2(level0.yz), float(m.texture.y), kMaxAnisotropicTaps);
   vec3 colour = vec3(0.0);
   vec2 moments = vec2(0.0);
+  vec2 size = vec2(level0.yz);
+  vec2 tap_major = f.major * size / f.taps, tap_minor = f.minor * size;  // one tap's axes, in texels
   for (float k = 0.0; k < f.taps; k += 1.0) {
     vec2 tap = uv + f.major * ((k + 0.5) / f.taps - 0.5);
     if (kTextureMethod == 2u)
@@ -90,11 +176,11 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy) {
     else if (kTextureMethod == 1u)
       colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, f.lod).x);
     else
-      moments += footprint_moments(m.texture.x, m.texture.y, tap, f.lod);
+      moments += footprint_moments(m.texture.x, m.texture.y, tap, f.lod, tap_major, tap_minor);
   }
-  if (kTextureMethod != 3u) return colour / f.taps;
+  if (kTextureMethod < 3u) return colour / f.taps;
   moments /= f.taps;
-  return colormap_filtered(map, moments.x, sqrt(max(moments.y - moments.x * moments.x, 0.0)));
+  return colormap_gaussian(map, moments.x, sqrt(max(moments.y - moments.x * moments.x, 0.0)));
 }
 
 #endif

@@ -132,7 +132,7 @@ TEST(SceneLoader, EachInvalidValueIsNamed) {
       {"/materials/grey/albedo", Json::array({0.5, 1.5, 0.5}),
        "scenes/x.json: materials.grey.albedo must have components in [0, 1.0], got [0.5,1.5,0.5]"},
       {"/materials/grey/type", "glass",
-       "scenes/x.json: materials.grey.type must be one of: lambert, microflake, colormap_texture, microsurface, got \"glass\""},
+       "scenes/x.json: materials.grey.type must be one of: lambert, microflake, colormap_texture, microsurface, diffraction, got \"glass\""},
       {"/materials/grey", Json{{"type", "microflake"}, {"ndf", "phong"}, {"param", 0.5}},
        "scenes/x.json: materials.grey.ndf must be one of: beckmann, ggx, kk, sg, got \"phong\""},
       {"/materials/grey", Json{{"type", "microflake"}, {"ndf", "kk"}, {"param", 1.0}},
@@ -155,8 +155,8 @@ TEST(SceneLoader, EachInvalidValueIsNamed) {
       {"/objects/0", "plane", "scenes/x.json: objects[0] must be a JSON object, got \"plane\""},
       {"/objects", Json::object(), "scenes/x.json: objects must be an array, got {}"},
       {"/lights", Json::array(),
-       "scenes/x.json: unknown key \"lights\" in the top level (known keys: ambient, background, camera, light, "
-       "materials, objects)"},
+       "scenes/x.json: unknown key \"lights\" in the top level (known keys: ambient, background, camera, "
+       "camera_path, light, materials, objects)"},
   };
   for (const InvalidCase& c : cases) {
     Json doc = example();

@@ -1,0 +1,42 @@
+#include "batch/input_hash.hpp"
+
+#include "common/error.hpp"
+#include "report/content_hash.hpp"
+
+namespace facet::batch {
+
+std::string scene_files_hash(const std::filesystem::path& scene) {
+  report::ContentHash hash;
+  const std::filesystem::path directory = scene.lexically_normal().parent_path();
+  for (const auto& file : report::scene_dependencies(scene))
+    hash.add_file(file, file.lexically_relative(directory).generic_string());
+  return hash.hex();
+}
+
+std::string item_inputs_hash(const std::string& scene_files, const Job& job, const Item& item,
+                             const std::string& renderer_version) {
+  report::ContentHash hash;
+  // Fields separated by NUL, which none of them contains.
+  const auto field = [&](const std::string& text) { hash.add(text + '\0'); };
+  field(scene_files);
+  field(item.method);
+  field(std::to_string(job.width) + "x" + std::to_string(job.height));
+  field(std::to_string(item.frame));
+  field(job.pixel_type);
+  field(job.preview ? "preview " + std::to_string(job.exposure) : "no preview");
+  if (item.method == "reference") field("grid " + std::to_string(job.grid) + " seed " + std::to_string(job.seed));
+  field(renderer_version);
+  return hash.hex();
+}
+
+std::string file_hash(const std::filesystem::path& file) {
+  try {
+    report::ContentHash hash;
+    hash.add_file(file, "");
+    return hash.hex();
+  } catch (const Error&) {
+    return {};
+  }
+}
+
+}  // namespace facet::batch

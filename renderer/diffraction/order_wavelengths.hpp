@@ -1,0 +1,50 @@
+// Order-restricted wavelengths (docs/diffraction_fast_paths.md): the host side of
+// shaders/lib/diffraction_orders.glsl. Finds the grating's own periods inside the patch, decides
+// whether evaluating only the wavelengths near its orders is cheaper than the full spectral path
+// (a height field that is not periodic falls back to it), and holds the observer table.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "diffraction/grating.hpp"
+#include "diffraction/spectral_integration.hpp"
+#include "diffraction/spectral_tables.hpp"
+#include "kernels/shared.hpp"
+
+namespace facet::diffraction {
+
+// How often the patch repeats itself along x and y: the largest divisors P of the sample count
+// with h(x + M/P) = h(x) everywhere (to 1e-9 of the height range). A grating of period T_x in a
+// patch of size L has repeats_x = L / T_x; a field constant along y has repeats_y = M.
+struct PatchRepeats {
+  int x = 1;
+  int y = 1;
+};
+PatchRepeats patch_repeats(const Grating& grating);
+
+// Candidate orders per pixel (the box of orders whose reach can meet its wavelength segment, at
+// worst: |(u, v)| = 2), above which the spectral path is used instead (eq. F.10). A candidate that
+// does not reach costs one interval test, ~1/50 of a BRDF evaluation.
+constexpr int kMaxOrdersPerPixel = 128;
+
+struct OrderWavelengths {
+  kernels::f64::DiffractionOrderLattice lattice{};
+  bool periodic = false;    // false: evaluate_orders runs the spectral path on `fallback`
+  double worst_orders = 0;  // the F.10 estimate
+  double lambda0_nm = 0.0;  // observer[i] = xyz_density(lambda0 + i nm), the observer per nm
+  std::vector<glm::dvec3> observer;
+  WavelengthSamples fallback;
+};
+
+// tolerance: window truncation and quadrature error of each order's integral (relative to its peak).
+OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTables& tables, double tolerance,
+                                        Illuminant light, WavelengthSamples fallback);
+
+// Linear sRGB of the BRDF integrated over the order intervals (the CPU double twin of the shader
+// path), or over `fallback` when the grating is not periodic.
+glm::dvec3 evaluate_orders(const SpectralTables& tables, const OrderWavelengths& plan, const glm::dvec3& wi,
+                           const glm::dvec3& wr);
+
+}  // namespace facet::diffraction

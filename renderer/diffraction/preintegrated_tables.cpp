@@ -1,0 +1,271 @@
+#include "diffraction/preintegrated_tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <sstream>
+
+#include <tbb/parallel_for.h>
+
+#include "common/error.hpp"
+#include "kernels/shared.hpp"
+
+namespace facet::diffraction {
+
+namespace {
+
+using namespace kernels::f64;
+using Complex = std::complex<double>;
+
+constexpr double kTwoPi = 6.283185307179586476925;
+constexpr double kHalfEpsilon = 1.0 / 2048.0;  // unit roundoff of IEEE half (11-bit significand)
+// Wavelengths whose window weights near (u, v) sum below this add at most its square (relative to
+// |H| <= 1) to |S|^2: skipped.
+constexpr double kNegligibleWindow = 1e-12;
+constexpr int kMaxRadius = 16;  // window radii beyond this would make the tables useless anyway
+
+double shortest_weighted_wavelength(const WavelengthSamples& samples) {
+  for (size_t i = 0; i < samples.lambda_nm.size(); ++i)
+    if (samples.xyz_weight[i] != glm::dvec3(0.0)) return samples.lambda_nm[i];
+  throw Error("preintegrated tables: the wavelength samples carry no weight");
+}
+
+// The per-wavelength part of F.3 shared by every node: d_m = sum_{n >= m} A_mn C_n with
+// A_mn = C(n, m) w_c^(n-m) (i k h_s)^n / n! and C_n = sum_j e_j H_n(j) the windowed table sum.
+struct WavelengthShift {
+  double k = 0.0;
+  std::vector<Complex> A;  // N x N, row m, zero below the diagonal
+};
+
+WavelengthShift wavelength_shift(const SpectralTables& t, double lambda_nm, double w_centre) {
+  WavelengthShift s;
+  const int N = t.N;
+  s.k = kTwoPi / lambda_nm;
+  std::vector<Complex> power(N);
+  Complex p(1.0);
+  for (int n = 0; n < N; ++n) {
+    power[n] = p;
+    p *= Complex(0.0, s.k * t.hs_nm / (n + 1));
+  }
+  s.A.assign(static_cast<size_t>(N) * N, Complex(0.0));
+  for (int m = 0; m < N; ++m) {
+    double binomial_wc = 1.0;  // C(n, m) w_c^(n-m)
+    for (int n = m; n < N; ++n) {
+      s.A[m * N + n] = binomial_wc * power[n];
+      binomial_wc *= w_centre * (n + 1) / (n + 1 - m);
+    }
+  }
+  return s;
+}
+
+// Per stored bin: whether any of its coefficients exceeds 1e-13 (the FFT's rounding) of the
+// largest. A periodic grating's power sits on its lattice of orders; the other bins, and the
+// (node, wavelength) pairs whose window holds none of the live ones, are skipped.
+std::vector<char> live_bins(const SpectralTables& t) {
+  double largest = 0.0;
+  for (const Complex& c : t.coefficients) largest = std::max(largest, std::abs(c));
+  std::vector<char> live(t.coefficients.size() / t.stored_terms, 0);
+  for (size_t i = 0; i < t.coefficients.size(); ++i)
+    if (std::abs(t.coefficients[i]) > 1e-13 * largest) live[i / t.stored_terms] = 1;
+  return live;
+}
+
+// Adds weight k^2 sum_{m+m'=p} Re(d_m conj d_m') to T_p (eq. F.4) at one node (u, v) for one
+// wavelength. The pairs (m, m') and (m', m) are conjugates, so their imaginary parts cancel.
+// Complex products are written out (std::complex's guard against inf/NaN costs a call each).
+class NodeIntegrator {
+ public:
+  explicit NodeIntegrator(const SpectralTables& t, const std::vector<char>& live)
+      : t_(t), live_(live), c_re_(t.N), c_im_(t.N), d_re_(t.N), d_im_(t.N) {}
+
+  void add(glm::dvec2 uv, const WavelengthShift& s, glm::dvec3 weight, std::vector<glm::dvec3>& T) {
+    const int N = t_.N, r = t_.r;
+    const glm::dvec2 alpha = s.k * uv;
+    const int jx0 = diffraction_nearest_bin(alpha.x, t_.period_nm), jy0 = diffraction_nearest_bin(alpha.y, t_.period_nm);
+    // The window weight separates: e_j = e_x(j_x) e_y(j_y).
+    double ex[kMaxRadius * 2 + 1], ey[kMaxRadius * 2 + 1];
+    double sum_x = 0.0, sum_y = 0.0;
+    for (int d = -r; d <= r; ++d) {
+      const glm::dvec2 f = diffraction_bin_frequency(jx0 + d, jy0 + d, t_.period_nm);
+      ex[d + r] = diffraction_window_weight(glm::dvec2(alpha.x - f.x, 0.0), t_.sigma_nm);
+      ey[d + r] = diffraction_window_weight(glm::dvec2(0.0, alpha.y - f.y), t_.sigma_nm);
+      sum_x += ex[d + r];
+      sum_y += ey[d + r];
+    }
+    if (sum_x * sum_y < kNegligibleWindow) return;
+    std::fill(c_re_.begin(), c_re_.end(), 0.0);
+    std::fill(c_im_.begin(), c_im_.end(), 0.0);
+    bool any = false;
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const DiffractionTableEntry entry = diffraction_table_entry(0, jx0 + dx, jy0 + dy, t_.J, t_.stored_terms);
+        if (!entry.valid || !live_[entry.index / t_.stored_terms]) continue;
+        any = true;
+        const double e = ex[dx + r] * ey[dy + r];
+        const double sign = entry.conjugate ? -e : e;
+        const Complex* H = &t_.coefficients[entry.index];  // the N terms of one bin are contiguous
+        for (int n = 0; n < N; ++n) {
+          c_re_[n] += e * H[n].real();
+          c_im_[n] += sign * H[n].imag();
+        }
+      }
+    if (!any) return;
+    for (int m = 0; m < N; ++m) {
+      double re = 0.0, im = 0.0;
+      for (int n = m; n < N; ++n) {
+        const Complex a = s.A[m * N + n];
+        re += a.real() * c_re_[n] - a.imag() * c_im_[n];
+        im += a.real() * c_im_[n] + a.imag() * c_re_[n];
+      }
+      d_re_[m] = re;
+      d_im_[m] = im;
+    }
+    const glm::dvec3 w3 = weight * (s.k * s.k);
+    for (int m = 0; m < N; ++m) {
+      T[2 * m] += w3 * (d_re_[m] * d_re_[m] + d_im_[m] * d_im_[m]);
+      for (int mp = m + 1; mp < N; ++mp)
+        T[m + mp] += w3 * (2.0 * (d_re_[m] * d_re_[mp] + d_im_[m] * d_im_[mp]));
+    }
+  }
+
+ private:
+  const SpectralTables& t_;
+  const std::vector<char>& live_;
+  std::vector<double> c_re_, c_im_, d_re_, d_im_;
+};
+
+PreintegratedGrid kernel_grid(const PreintegratedTables& t) {
+  return PreintegratedGrid(t.origin, t.spacing, t.nu, t.nv, t.terms, t.words);
+}
+
+std::string mib(std::uint64_t bytes) {
+  std::ostringstream s;
+  s.precision(1);
+  s << std::fixed << bytes / 1048576.0 << " MiB";
+  return s.str();
+}
+
+}  // namespace
+
+PreintegratedDomain domain_of_directions(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs) {
+  if (pairs.empty()) throw Error("preintegrated tables: no directions to cover");
+  PreintegratedDomain d{glm::dvec2(1e300), glm::dvec2(-1e300), 0.0, -2.0};
+  for (const auto& [wi, wr] : pairs) {
+    const glm::dvec2 uv = -glm::dvec2(wi.x + wr.x, wi.y + wr.y);
+    d.uv_min = glm::min(d.uv_min, uv);
+    d.uv_max = glm::max(d.uv_max, uv);
+    const double w = -(wi.z + wr.z);
+    d.w_min = std::min(d.w_min, w);
+    d.w_max = std::max(d.w_max, w);
+  }
+  return d;
+}
+
+PreintegratedLayout preintegrated_layout(const SpectralTables& tables, const WavelengthSamples& samples,
+                                         const PreintegratedDomain& domain, const PreintegrationSettings& settings) {
+  if (!(settings.tolerance > 0.0 && settings.tolerance < 1.0))
+    throw Error("preintegrated tables: tolerance must lie in (0, 1)");
+  const double k_max = kTwoPi / shortest_weighted_wavelength(samples);
+  // F.6: bilinear error <= (h_u^2 + h_v^2) / 8 * 2 sigma^2 k^2 * envelope <= tol * envelope.
+  const double h = std::sqrt(2.0 * settings.tolerance) / (tables.sigma_nm * k_max);
+  PreintegratedLayout l{};
+  const glm::dvec2 extent = domain.uv_max - domain.uv_min;
+  const double nodes_u = std::max(2.0, std::ceil(extent.x / h) + 1.0), nodes_v = std::max(2.0, std::ceil(extent.y / h) + 1.0);
+  l.origin = domain.uv_min;
+  l.spacing = glm::dvec2(extent.x > 0.0 ? extent.x / (nodes_u - 1.0) : h, extent.y > 0.0 ? extent.y / (nodes_v - 1.0) : h);
+  l.terms = 2 * tables.N - 1;
+  l.amplification = std::exp(k_max * tables.hs_nm * (domain.w_max - domain.w_min));
+  // Halves round each coefficient to 2^-11 of itself; the polynomial's terms exceed its value by
+  // at most the amplification, so halves serve only when that keeps a quarter of the budget.
+  l.words = kHalfEpsilon * l.amplification <= settings.tolerance / 4.0 ? 2 : 3;
+  const double bytes = nodes_u * nodes_v * l.terms * l.words * 4.0;
+  l.bytes = bytes < 1.8e19 ? static_cast<std::uint64_t>(bytes) : UINT64_MAX;
+  l.nu = static_cast<int>(std::min(nodes_u, 2e9));
+  l.nv = static_cast<int>(std::min(nodes_v, 2e9));
+  return l;
+}
+
+PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, const WavelengthSamples& samples,
+                                               const PreintegratedDomain& domain,
+                                               const PreintegrationSettings& settings) {
+  const PreintegratedLayout l = preintegrated_layout(tables, samples, domain, settings);
+  if (l.bytes > settings.max_buffer_bytes)
+    throw Error("preintegrated tables: " + std::to_string(l.nu) + " x " + std::to_string(l.nv) + " (u, v) nodes x " +
+                std::to_string(l.terms) + " terms need " + mib(l.bytes) + ", more than the device's storage-buffer range of " +
+                mib(settings.max_buffer_bytes) + "; narrow the view, raise the tolerance or use --diffraction spectral");
+  PreintegratedTables t;
+  t.origin = l.origin;
+  t.spacing = l.spacing;
+  t.nu = l.nu;
+  t.nv = l.nv;
+  t.terms = l.terms;
+  t.words = l.words;
+  t.w_centre = 0.5 * (domain.w_min + domain.w_max);
+  t.floor_lambda_nm = samples.lambda_nm.back();  // the coarsest resolution of the range (docs)
+  t.sigma_nm = tables.sigma_nm;
+  t.hs_nm = tables.hs_nm;
+  t.R0 = tables.R0;
+
+  if (tables.r > kMaxRadius) throw Error("preintegrated tables: the coherence window is too narrow (radius > 16 bins)");
+  std::vector<WavelengthShift> shifts;
+  std::vector<glm::dvec3> weights;
+  for (size_t i = 0; i < samples.lambda_nm.size(); ++i)
+    if (samples.xyz_weight[i] != glm::dvec3(0.0)) {
+      shifts.push_back(wavelength_shift(tables, samples.lambda_nm[i], t.w_centre));
+      weights.push_back(samples.xyz_weight[i]);
+    }
+  const std::vector<char> live = live_bins(tables);
+  const size_t nodes = static_cast<size_t>(t.nu) * t.nv;
+  std::vector<glm::dvec3> T(nodes * t.terms, glm::dvec3(0.0));
+  tbb::parallel_for(0, t.nv, [&](int iv) {
+    NodeIntegrator integrator(tables, live);
+    std::vector<glm::dvec3> node(t.terms);
+    for (int iu = 0; iu < t.nu; ++iu) {
+      const glm::dvec2 uv = t.origin + glm::dvec2(iu, iv) * t.spacing;
+      std::fill(node.begin(), node.end(), glm::dvec3(0.0));
+      for (size_t i = 0; i < shifts.size(); ++i) integrator.add(uv, shifts[i], weights[i], node);
+      std::copy(node.begin(), node.end(), T.begin() + (static_cast<size_t>(iv) * t.nu + iu) * t.terms);
+    }
+  });
+
+  t.scale.assign(t.terms, 0.0f);
+  std::vector<double> largest(t.terms, 0.0);
+  for (size_t i = 0; i < T.size(); ++i) {
+    const glm::dvec3 a = glm::abs(T[i]);
+    largest[i % t.terms] = std::max({largest[i % t.terms], a.x, a.y, a.z});
+  }
+  // High powers of delta can carry coefficients below float's range: their scale stays normal.
+  for (int p = 0; p < t.terms; ++p)
+    t.scale[p] = std::max(static_cast<float>(largest[p]), std::numeric_limits<float>::min());
+  t.packed.resize(T.size() * t.words);
+  for (size_t i = 0; i < T.size(); ++i) {
+    const glm::vec3 v = glm::vec3(T[i] / static_cast<double>(t.scale[i % t.terms]));
+    std::uint32_t* out = &t.packed[i * t.words];
+    if (t.words == 2) {
+      out[0] = glm::packHalf2x16(glm::vec2(v.x, v.y));
+      out[1] = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
+    } else {
+      for (int c = 0; c < 3; ++c) out[c] = glm::floatBitsToUint(v[c]);
+    }
+  }
+  return t;
+}
+
+glm::dvec3 evaluate_preintegrated(const PreintegratedTables& t, const glm::dvec3& wi, const glm::dvec3& wr) {
+  const PreintegratedGrid grid = kernel_grid(t);
+  const DiffractionGeometry g = diffraction_geometry(wi, wr, t.floor_lambda_nm, t.sigma_nm, t.hs_nm);
+  const PreintegratedCell cell = preintegrated_cell(grid, preintegrated_uv(wi, wr));
+  auto corner = [&](int du, int dv, int p) {
+    const std::uint32_t* w = &t.packed[preintegrated_word_index(grid, cell, du, dv, p)];
+    const double s = t.scale[p];
+    return t.words == 2 ? preintegrated_unpack_half(w[0], w[1], s) : preintegrated_unpack_float(w[0], w[1], w[2], s);
+  };
+  glm::dvec3 acc(0.0);
+  const double delta = g.w - t.w_centre;
+  for (int p = t.terms - 1; p >= 0; --p)
+    acc = preintegrated_horner_step(acc, delta, cell, corner(0, 0, p), corner(1, 0, p), corner(0, 1, p), corner(1, 1, p));
+  return preintegrated_linear_srgb(g, acc, t.sigma_nm, t.R0);
+}
+
+}  // namespace facet::diffraction

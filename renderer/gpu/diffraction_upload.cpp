@@ -1,0 +1,76 @@
+#include "gpu/diffraction_upload.hpp"
+
+#include <algorithm>
+#include <span>
+#include <string>
+
+#include "common/error.hpp"
+#include "diffraction/spectral_tables.hpp"
+#include "gpu/diffraction_fast_upload.hpp"
+
+namespace facet::gpu {
+
+using diffraction::GpuDiffractionMaterial;
+
+long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepared) {
+  const long bins = (2L * prepared.tables.r + 1) * (2L * prepared.tables.r + 1);
+  const long taylor = (prepared.tables.N - 1 + 7) / 8;
+  return static_cast<long>(prepared.samples.lambda_nm.size()) * (1 + bins * (1 + taylor));
+}
+
+DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
+                                      const diffraction::DiffractionSettings& settings, int rays_per_pixel) {
+  std::vector<glm::vec2> coefficients;
+  std::vector<GpuDiffractionMaterial> materials;
+  std::vector<glm::vec4> wavelengths;
+  FastPathData fast;
+  int most_wavelengths = 0, most_taylor = 0;
+  const diffraction::DiffractionMethod method = scene_diffraction_method(scene, settings);
+  const auto all = diffraction::prepare_scene_diffraction(scene, settings);
+  for (size_t i = 0; i < all.size(); ++i) {
+    const auto& prepared = all[i];
+    if (!prepared) continue;
+    const long iterations = diffraction_loop_iterations(*prepared);
+    if (method != diffraction::DiffractionMethod::Preintegrated &&
+        rays_per_pixel * (iterations + kTraceLoopReserve) > kLoopIterationLimit)
+      throw Error("diffraction material '" + scene.material_names[i] + "': " +
+                  std::to_string(prepared->samples.lambda_nm.size()) + " wavelengths x " +
+                  std::to_string((2 * prepared->tables.r + 1) * (2 * prepared->tables.r + 1)) + " bins x " +
+                  std::to_string(prepared->tables.N) + " Taylor terms need " + std::to_string(iterations) +
+                  " shader loop iterations per ray, " + std::to_string(rays_per_pixel) +
+                  " rays per pixel; lavapipe ends a pixel's loops after " + std::to_string(kLoopIterationLimit) +
+                  ": raise the tolerance or use fewer wavelengths");
+    const std::vector<glm::vec2> table = prepared->tables.coefficients_f32();
+    const diffraction::WavelengthSamples& s = prepared->samples;
+    GpuDiffractionMaterial entry{};  // the fast paths' fields stay zero unless their method fills them
+    entry.table = prepared->tables.info();
+    entry.offsets = glm::uvec4(coefficients.size(), wavelengths.size(), s.lambda_nm.size(), 0);
+    append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method,
+                      context.limits().maxStorageBufferRange);
+    materials.push_back(entry);
+    most_wavelengths = std::max(most_wavelengths, static_cast<int>(s.lambda_nm.size()));
+    most_taylor = std::max(most_taylor, prepared->tables.N);
+    coefficients.insert(coefficients.end(), table.begin(), table.end());
+    for (size_t i = 0; i < s.lambda_nm.size(); ++i)
+      wavelengths.emplace_back(static_cast<float>(s.lambda_nm[i]), glm::vec3(s.xyz_weight[i]));
+  }
+  const uint64_t bytes = coefficients.size() * sizeof(glm::vec2);
+  if (bytes > context.limits().maxStorageBufferRange)
+    throw Error("the diffraction tables of this scene (" + std::to_string(bytes >> 20) +
+                " MiB) exceed the device's storage buffer range; use gratings with fewer samples or a larger tolerance");
+  // Placeholders where a method has no data (a buffer cannot be empty).
+  if (fast.preintegrated_words.empty()) fast.preintegrated_words.push_back(0);
+  if (fast.preintegrated_scales.empty()) fast.preintegrated_scales.push_back(0.0f);
+  if (fast.observer.empty()) fast.observer.emplace_back(0.0f);
+  return {vk::Buffer::from(context, std::span<const glm::vec2>(coefficients)),
+          vk::Buffer::from(context, std::span<const GpuDiffractionMaterial>(materials)),
+          vk::Buffer::from(context, std::span<const glm::vec4>(wavelengths)),
+          vk::Buffer::from(context, std::span<const uint32_t>(fast.preintegrated_words)),
+          vk::Buffer::from(context, std::span<const float>(fast.preintegrated_scales)),
+          vk::Buffer::from(context, std::span<const glm::vec4>(fast.observer)),
+          method,
+          most_wavelengths,
+          most_taylor};
+}
+
+}  // namespace facet::gpu

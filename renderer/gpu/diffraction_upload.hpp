@@ -1,0 +1,48 @@
+// The diffraction materials of a scene in the direct pass's storage buffers (bindings 11-13 of
+// shaders/render/diffraction_shading.glsl): every material's spectral tables (float) and wavelength
+// samples, prepared for this render (diffraction/prepared_diffraction.hpp).
+#pragma once
+
+#include <vector>
+
+#include "diffraction/prepared_diffraction.hpp"
+#include "scene/scene.hpp"
+#include "vk/buffer.hpp"
+#include "vk/context.hpp"
+
+namespace facet::gpu {
+
+struct DiffractionBuffers {
+  vk::Buffer coefficients;  // vec2: the tables of all materials, one after another
+  vk::Buffer materials;     // GpuDiffractionMaterial, in the order of the scene's diffraction materials
+  vk::Buffer wavelengths;   // vec4 (lambda nm, XYZ weight)
+  vk::Buffer preintegrated_words;   // uint: `preintegrated` tables (gpu/diffraction_fast_upload.hpp)
+  vk::Buffer preintegrated_scales;  // float: their per-term scales
+  vk::Buffer observer;              // vec4: the `orders` observer tables, XYZ per nm
+  diffraction::DiffractionMethod method = diffraction::DiffractionMethod::Spectral;  // kDiffractionMethod
+  int most_wavelengths = 0;  // the most wavelength samples / Taylor terms of any material (metadata)
+  int most_taylor = 0;
+
+  std::vector<const vk::Buffer*> bindings() const {
+    return {&coefficients, &materials, &wavelengths, &preintegrated_words, &preintegrated_scales, &observer};
+  }
+};
+
+// Lavapipe stops every loop of a shader invocation, silently, once all its loops together have run
+// 65535 iterations (gallivm's LP_MAX_TGSI_LOOP_ITERATIONS). The spectral loop of one ray runs
+// K (1 + B (1 + ceil((N - 1) / 8))) of them (render/diffraction_taylor.glsl: K wavelengths, B bins,
+// N Taylor terms); kTraceLoopReserve per ray is left for tracing (BVH, planes, spheres, shadow ray).
+constexpr int kLoopIterationLimit = 65535;
+constexpr int kTraceLoopReserve = 4096;
+long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepared);
+
+// Diffraction material i of the scene (counting only diffraction materials, in scene order) is
+// entry i of `materials`: the index scene_upload puts in GpuMaterial::kind.y. Throws facet::Error
+// if the tables exceed the device's storage-buffer range, or if `rays_per_pixel` rays of a material
+// would exceed the loop limit above (spectral and orders), or if the materials ask for different
+// methods (gpu/diffraction_fast_upload.hpp). A scene without diffraction gets one-element placeholders (the
+// pass binds them, its shader never reads them).
+DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
+                                      const diffraction::DiffractionSettings& settings = {}, int rays_per_pixel = 1);
+
+}  // namespace facet::gpu

@@ -1,0 +1,33 @@
+// A microsurface material as GPU data (docs/microsurface_filtering.md). In the shared texel buffer:
+//   level `first`: the vertex heights z(i, j) - z_offset of the field (world units), for the point
+//     lookups of (H1)-(H2) (naive, and filtered under magnification);
+//   then three MIP chains of `count` levels over the field's cells (texel (i, j) = the bilinear patch
+//   between vertices i..i+1, j..j+1, so texel centres sit where sample_level expects them):
+//     moments  (E[z], E[z^2], E[s_x], E[s_y])        exact over each patch, heights minus z_offset,
+//     slopes   (E[s_x^2], E[s_y^2], E[s_x s_y], 0)    slopes s = grad z in world units,
+//     albedo   (mean height_colormap(z) slope_colormap(|s|) over the patch, 0), for colormip.
+// Coarser levels are box means (append_mip_chain), i.e. the moments over the covered patches.
+#pragma once
+
+#include <vector>
+
+#include "gpu/scene_layout.hpp"
+#include "gpu/texture_upload.hpp"
+#include "scene/scene.hpp"
+
+namespace facet::gpu {
+
+// The level-0 texels of the three chains, in that order, width * height each.
+struct MicrosurfaceLevel0 {
+  std::vector<vec4> moments, slopes, albedo;
+};
+MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, double z_offset);
+
+// Appends the vertex level, the three chains and the colour maps; returns the material record:
+//   albedo  (specular reflectance rgb, texel size)
+//   kind    (FACET_MATERIAL_MICROSURFACE, 1 if it has a specular lobe, -, -)
+//   params  (alpha_x, alpha_y, z_offset, -)
+//   texture (first level = vertex level, chain level count, height map, slope map (or FACET_NO_COLORMAP))
+GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& material);
+
+}  // namespace facet::gpu

@@ -1,0 +1,30 @@
+#include "report/bench_record.hpp"
+
+namespace facet::report {
+
+nlohmann::json to_json(const BenchRecord& r) {
+  nlohmann::json json = {{"scene", r.scene},   {"scene_file", r.scene_file},     {"method", r.method},
+                         {"width", r.width},   {"height", r.height},             {"device", r.device},
+                         {"machine", r.machine}, {"facet_version", r.facet_version}};
+  if (r.error) {
+    json["error"] = *r.error;
+    return json;
+  }
+  const Spread& headline = r.timing.headline();
+  json["time_ms"] = headline.median;
+  json["time_ms_min"] = headline.min;
+  json["time_ms_max"] = headline.max;
+  json["time_source"] = r.timing.has_gpu_time ? "gpu" : "wall";
+  json["wall_ms"] = r.timing.wall_ms.median;
+  json["wall_ms_min"] = r.timing.wall_ms.min;
+  json["wall_ms_max"] = r.timing.wall_ms.max;
+  json["gpu_ms"] = r.timing.has_gpu_time ? nlohmann::json(r.timing.gpu_ms.median) : nlohmann::json(nullptr);
+  json["repeats"] = r.timing.repeats;
+  json["prepare_ms"] = r.prepare_ms;
+  json.update(facet::to_json(r.comparison));
+  json["image"] = r.image;
+  json["heatmap"] = r.heatmap;
+  return json;
+}
+
+}  // namespace facet::report

@@ -1,0 +1,199 @@
+#include "report/bench_run.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <set>
+
+#include "common/error.hpp"
+#include "common/progress.hpp"
+#include "cpu/reference_renderer.hpp"
+#include "image/flip.hpp"
+#include "image/atomic_file.hpp"
+#include "image/heatmap.hpp"
+#include "image/png_io.hpp"
+#include "report/method_catalogue.hpp"
+#include "report/reference_cache.hpp"
+#include "report/run_info.hpp"
+#include "report/svg_plot.hpp"
+#include "report/thumbnail.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace facet::report {
+
+namespace {
+
+constexpr int kQuickWidth = 160;
+constexpr int kThumbnailWidth = 320;
+
+// "ss:4" -> "ss-4": safe in file names and URLs.
+std::string file_stem(const std::string& method) {
+  std::string stem = method;
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = c == ':' ? '-' : '_';
+  return stem;
+}
+
+// Scene names (file stems), made unique with a numeric suffix.
+std::string unique_name(const std::filesystem::path& file, std::set<std::string>& taken) {
+  std::string name = file_stem(file.stem().string());
+  for (int k = 2; !taken.insert(name).second; ++k) name = file_stem(file.stem().string()) + "_" + std::to_string(k);
+  return name;
+}
+
+// Overrides first; a side not given follows the scene's aspect. Quick runs default to 160 px wide.
+std::pair<int, int> resolution(const BenchOptions& options, const Camera& camera) {
+  const double aspect = double(camera.height) / camera.width;
+  auto at_least_1 = [](double v) { return std::max(1, static_cast<int>(std::lround(v))); };
+  const int width = options.width > 0    ? options.width
+                    : options.height > 0 ? at_least_1(options.height / aspect)
+                    : options.quick      ? std::min(kQuickWidth, camera.width)
+                                         : camera.width;
+  const int height = options.height > 0 ? options.height : at_least_1(width * aspect);
+  return {width, height};
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  write_file_atomically(path, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+}
+
+// Times one method on one scene; any failure becomes the record's error.
+BenchRecord measure_method(vk::Context& context, const Scene& scene, const CatalogueEntry& method,
+                           const Image& reference, int repeats, const std::filesystem::path& out_dir,
+                           const std::string& scene_name, BenchRecord record, const std::function<void()>& tick) {
+  record.method = method.name;
+  try {
+    const std::uint32_t messages_before = context.validation_message_count();
+    const auto prepare_start = std::chrono::steady_clock::now();
+    const FrameRenderer render = method.prepare(context, scene);
+    // The first frame is the warm-up (lavapipe JIT-compiles on the first dispatch) and gives the image.
+    const MethodRun first = render(reference.width, reference.height);
+    record.prepare_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - prepare_start).count();
+    tick();
+    record.timing = time_repeats(repeats, [&] {
+      const double gpu_ms = render(reference.width, reference.height).gpu_ms;
+      tick();
+      return gpu_ms;
+    });
+    if (context.validation_message_count() != messages_before)
+      throw Error("Vulkan validation reported " +
+                  std::to_string(context.validation_message_count() - messages_before) + " messages");
+    record.comparison = compare_images(first.image, reference);
+    record.image = scene_name + "/" + file_stem(method.name) + ".png";
+    record.heatmap = scene_name + "/" + file_stem(method.name) + ".flip.png";
+    write_png_preview(out_dir / record.image, thumbnail(first.image, kThumbnailWidth));
+    write_heatmap_png(out_dir / record.heatmap, thumbnail(flip_map(first.image, reference), kThumbnailWidth), 1.0);
+  } catch (const std::exception& e) {
+    record.error = e.what();
+    record.timing = {};
+    record.image.clear();
+    record.heatmap.clear();
+  }
+  return record;
+}
+
+void run_scene(vk::Context& context, const BenchOptions& options, const std::filesystem::path& cache_dir,
+               SceneRun& run, BenchRun& bench) {
+  BenchRecord base;
+  base.scene = run.name;
+  base.scene_file = run.scene_file;
+  base.device = bench.device;
+  base.machine = bench.machine;
+  base.facet_version = bench.facet_version;
+  Scene scene;
+  CachedReference reference;
+  try {
+    scene = load_scene(run.scene_file);
+    std::tie(run.width, run.height) = resolution(options, scene.camera);
+    std::unique_ptr<ProgressBar> bar;
+    cpu::ReferenceOptions render;
+    render.width = run.width;
+    render.height = run.height;
+    render.grid = bench.grid;
+    render.seed = bench.seed;
+    render.progress = [&](std::int64_t done, std::int64_t total) {
+      if (!bar) bar = std::make_unique<ProgressBar>("reference " + run.name, total);
+      bar->update(done);
+    };
+    reference = cached_reference(cache_dir, {run.scene_file, bench.facet_version, run.width, run.height, bench.grid, bench.seed},
+                                 [&] { return cpu::render_reference(scene, render); });
+    if (bar) bar->finish();
+    std::filesystem::create_directories(options.out_dir / run.name);
+    run.reference_image = run.name + "/reference.png";
+    write_png_preview(options.out_dir / run.reference_image, thumbnail(reference.image, kThumbnailWidth));
+  } catch (const std::exception& e) {
+    run.error = e.what();
+    base.method = "reference";
+    base.width = run.width;
+    base.height = run.height;
+    base.error = run.error;
+    bench.records.push_back(base);
+    return;
+  }
+  run.reference_key = reference.key;
+  run.reference_cache_hit = reference.cache_hit;
+  run.reference_ms = reference.render_ms;
+  base.width = run.width;
+  base.height = run.height;
+
+  const std::vector<CatalogueEntry> methods = select_methods(scene_features(scene), options.quick, options.methods);
+  ProgressBar progress("bench " + run.name, static_cast<std::int64_t>(methods.size()) * (bench.repeats + 1));
+  std::int64_t step = 0;
+  std::vector<PlotPoint> points;
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    BenchRecord record = measure_method(context, scene, methods[i], reference.image, bench.repeats, options.out_dir,
+                                        run.name, base, [&] { progress.update(++step); });
+    step = static_cast<std::int64_t>(i + 1) * (bench.repeats + 1);  // a failed method skips its remaining runs
+    progress.update(step);
+    if (record.ok()) points.push_back({record.method, record.time_ms(), record.comparison.rmse});
+    bench.records.push_back(std::move(record));
+  }
+  progress.finish();
+  run.plot = run.name + "/speed_error.svg";
+  write_text(options.out_dir / run.plot,
+             speed_error_svg(points, {run.name + ": speed vs error", "time per frame (ms, median)", "RMSE vs reference"}));
+}
+
+}  // namespace
+
+int BenchRun::exit_status() const {
+  const bool scene_failed = std::any_of(scenes.begin(), scenes.end(), [](const SceneRun& s) { return s.error.has_value(); });
+  const bool any_ok = std::any_of(records.begin(), records.end(), [](const BenchRecord& r) { return r.ok(); });
+  return scene_failed || !any_ok ? 1 : 0;
+}
+
+BenchRun run_bench(const BenchOptions& options) {
+  if (options.scenes.empty()) throw Error("no scene given");
+  std::error_code error;
+  std::filesystem::create_directories(options.out_dir, error);
+  if (error) throw Error(options.out_dir.string() + ": cannot create the output directory: " + error.message());
+
+  BenchRun bench;
+  bench.machine = machine_description();
+  bench.facet_version = options.facet_version;
+  bench.date = utc_timestamp();
+  bench.quick = options.quick;
+  bench.grid = options.grid > 0 ? options.grid : options.quick ? 8 : 32;
+  bench.repeats = options.repeats > 0 ? options.repeats : options.quick ? 2 : 5;
+  bench.seed = options.seed;
+  vk::Context context(options.device);
+  bench.device = context.info().name;
+  const std::filesystem::path cache_dir = options.cache_dir.empty() ? options.out_dir / "cache" : options.cache_dir;
+
+  std::set<std::string> names;
+  for (const auto& file : options.scenes) {
+    SceneRun run;
+    run.name = unique_name(file, names);
+    run.scene_file = file.string();
+    run_scene(context, options, cache_dir, run, bench);
+    bench.scenes.push_back(run);
+  }
+  if (options.kernel_stability) bench.stability = kernel_stability(context);
+  return bench;
+}
+
+}  // namespace facet::report

@@ -1,0 +1,60 @@
+// `facet bench`: per scene the reference (cached), then every applicable method timed over
+// repeats and measured against it; thumbnails, heat maps and a speed-vs-error plot per scene.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "report/bench_record.hpp"
+#include "report/kernel_stability.hpp"
+#include "vk/context.hpp"
+
+namespace facet::report {
+
+struct BenchOptions {
+  std::vector<std::filesystem::path> scenes;
+  std::filesystem::path out_dir;
+  std::filesystem::path cache_dir;  // empty: out_dir/cache
+  bool quick = false;               // small images, grid 8, ss:K up to 8, 2 repeats
+  int width = 0, height = 0;        // 0: the mode's (quick: 160 px wide at the scene's aspect; else the scene's)
+  int grid = 0;                     // reference N x N; 0: 8 quick, 32 full
+  int repeats = 0;                  // timed runs per method; 0: 2 quick, 5 full
+  std::uint64_t seed = 1;
+  std::vector<std::string> methods; // empty: the catalogue's applicable ones
+  bool kernel_stability = true;
+  std::string facet_version;
+  vk::ContextOptions device;
+};
+
+struct SceneRun {
+  std::string name, scene_file;
+  int width = 0, height = 0;
+  std::optional<std::string> error;  // the scene or its reference failed; no method ran
+  std::string reference_key;
+  bool reference_cache_hit = false;
+  double reference_ms = 0.0;
+  std::string reference_image, plot;  // relative to out_dir
+};
+
+struct BenchRun {
+  std::string machine, device, facet_version, date;
+  bool quick = false;
+  int grid = 0, repeats = 0;
+  std::uint64_t seed = 1;
+  std::vector<SceneRun> scenes;
+  std::vector<BenchRecord> records;
+  std::vector<StabilityRow> stability;
+  // 0 when every scene's reference was made and at least one method ran; else 1 (method errors
+  // alone are reported in the records and do not fail the run).
+  int exit_status() const;
+};
+
+// Renders, measures and writes the images and plots under options.out_dir; the caller writes the
+// reports (report_files.hpp). Throws facet::Error only for problems of the whole run (no device,
+// an output folder that cannot be made).
+BenchRun run_bench(const BenchOptions& options);
+
+}  // namespace facet::report

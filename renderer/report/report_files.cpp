@@ -1,0 +1,75 @@
+#include "report/report_files.hpp"
+
+#include <cstdio>
+
+#include "image/atomic_file.hpp"
+#include "report/pareto.hpp"
+
+namespace facet::report {
+
+std::string format_3g(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
+}
+
+std::vector<SceneRow> scene_rows(const BenchRun& run, const std::string& scene) {
+  std::vector<SceneRow> rows;
+  std::vector<CostError> points;
+  std::vector<std::size_t> point_row;
+  for (const BenchRecord& record : run.records) {
+    if (record.scene != scene) continue;
+    if (record.ok()) {
+      points.push_back({record.time_ms(), record.comparison.rmse});
+      point_row.push_back(rows.size());
+    }
+    rows.push_back({&record});
+  }
+  for (std::size_t i : pareto_front(points)) rows[point_row[i]].on_front = true;
+  return rows;
+}
+
+nlohmann::json results_json(const BenchRun& run) {
+  nlohmann::json records = nlohmann::json::array();
+  for (const BenchRecord& record : run.records) records.push_back(to_json(record));
+  return records;
+}
+
+nlohmann::json run_json(const BenchRun& run) {
+  nlohmann::json scenes = nlohmann::json::array();
+  for (const SceneRun& s : run.scenes) {
+    nlohmann::json scene = {{"scene", s.name}, {"scene_file", s.scene_file}, {"width", s.width}, {"height", s.height}};
+    if (s.error) {
+      scene["error"] = *s.error;
+    } else {
+      scene.update({{"reference_key", s.reference_key},
+                    {"reference_cache_hit", s.reference_cache_hit},
+                    {"reference_ms", s.reference_ms},
+                    {"reference_image", s.reference_image},
+                    {"plot", s.plot}});
+    }
+    scenes.push_back(scene);
+  }
+  auto optional_number = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  nlohmann::json stability = nlohmann::json::array();
+  for (const StabilityRow& row : run.stability)
+    stability.push_back({{"kernel", row.kernel}, {"domain", row.domain}, {"reference", row.reference},
+                         {"measure", row.measure}, {"f64", optional_number(row.f64)},
+                         {"f32", optional_number(row.f32)}, {"gpu", optional_number(row.gpu)}});
+  return {{"machine", run.machine}, {"device", run.device},   {"facet_version", run.facet_version},
+          {"date", run.date},       {"quick", run.quick},     {"grid", run.grid},
+          {"repeats", run.repeats}, {"seed", run.seed},       {"scenes", scenes},
+          {"kernel_stability", stability}, {"exit_status", run.exit_status()}};
+}
+
+void write_report_files(const BenchRun& run, const std::filesystem::path& out_dir) {
+  auto write = [](const std::filesystem::path& path, const std::string& text) {
+    write_file_atomically(path, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+  };
+  write(out_dir / "results.json", results_json(run).dump(1) + "\n");
+  write(out_dir / "run.json", run_json(run).dump(1) + "\n");
+  write(out_dir / "report.md", report_markdown(run));
+  write(out_dir / "index.html", report_html(run));
+}
+
+}  // namespace facet::report

@@ -1,0 +1,101 @@
+// report.md: what ran where, the headline, one table per scene, the kernel-stability table.
+#include <sstream>
+
+#include "report/headline.hpp"
+#include "report/report_files.hpp"
+
+namespace facet::report {
+
+namespace {
+
+std::string optional_3g(const std::optional<double>& value) { return value ? format_3g(*value) : "–"; }
+
+// A message inside a table cell: '|' would end the cell, a newline the row.
+std::string table_cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
+  return out;
+}
+
+void write_header(std::ostringstream& md, const BenchRun& run) {
+  md << "# facet bench report\n\n"
+     << "- machine: " << run.machine << "\n- device: " << run.device << "\n- facet " << run.facet_version << ", "
+     << run.date << ", " << (run.quick ? "`--quick`" : "full") << " run: reference " << run.grid << "×" << run.grid
+     << " jittered rays per pixel, each method rendered once to warm up and then timed over " << run.repeats
+     << " runs\n\n"
+     << "`time` is the median device time (GPU timestamps) per frame when the device has timestamps, else the "
+        "median wall time; `min–max` is its spread; `prepare` is the one-off set-up (buffers, precomputed "
+        "tables, pipeline) plus the warm-up frame. Errors are against the reference, with the metrics of "
+        "`facet compare` (docs/report.md).\n\n";
+}
+
+void write_headline(std::ostringstream& md, const BenchRun& run) {
+  const std::vector<Headline> lines = headlines(run.records);
+  if (lines.empty()) return;
+  md << "## Headline: `filtered` against the cheapest `ss:K` as accurate\n\n"
+     << "| scene | filtered ms | filtered RMSE | cheapest ss:K with RMSE ≤ | its ms | its RMSE | speed-up |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  for (const Headline& h : lines) {
+    md << "| " << h.scene << " | " << format_3g(h.filtered.time_ms()) << " | " << format_3g(h.filtered.comparison.rmse)
+       << " | ";
+    if (h.supersampled)
+      md << h.supersampled->method << " | " << format_3g(h.supersampled->time_ms()) << " | "
+         << format_3g(h.supersampled->comparison.rmse) << " | " << format_3g(h.speedup()) << "× |\n";
+    else
+      md << "no ss:K that ran is as accurate | – | – | – |\n";
+  }
+  md << "\n";
+}
+
+void write_scene(std::ostringstream& md, const BenchRun& run, const SceneRun& scene) {
+  md << "## " << scene.name << "\n\n`" << scene.scene_file << "`";
+  if (scene.error) {
+    md << ": **failed**: " << table_cell(*scene.error) << "\n\n";
+    return;
+  }
+  md << ", " << scene.width << "×" << scene.height << ", reference "
+     << (scene.reference_cache_hit ? "from the cache" : "rendered in " + format_3g(scene.reference_ms) + " ms")
+     << "\n\n![" << scene.name << ": speed vs error](" << scene.plot << ")\n\n"
+     << "| method | time ms | min–max | wall ms | prepare ms | RMSE | rel. MSE | PSNR dB | SSIM | FLIP | Pareto |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const SceneRow& row : scene_rows(run, scene.name)) {
+    const BenchRecord& r = *row.record;
+    if (!r.ok()) {
+      md << "| " << r.method << " | error: " << table_cell(*r.error) << " | | | | | | | | | |\n";
+      continue;
+    }
+    const Spread& t = r.timing.headline();
+    md << "| " << r.method << " | " << format_3g(t.median) << " | " << format_3g(t.min) << "–" << format_3g(t.max)
+       << " | " << format_3g(r.timing.wall_ms.median) << " | " << format_3g(r.prepare_ms) << " | "
+       << format_3g(r.comparison.rmse) << " | "
+       << format_3g(r.comparison.rel_mse) << " | " << format_3g(r.comparison.psnr) << " | "
+       << optional_3g(r.comparison.ssim) << " | " << format_3g(r.comparison.flip) << " | " << (row.on_front ? "●" : "")
+       << " |\n";
+  }
+  md << "\n";
+}
+
+void write_stability(std::ostringstream& md, const BenchRun& run) {
+  if (run.stability.empty()) return;
+  md << "## Numerical stability of the math kernels\n\n"
+     << "Worst error over each kernel's hard cases (– : not measured).\n\n"
+     << "| kernel | hard cases | reference | error | f64 | f32 | GPU |\n|---|---|---|---|---|---|---|\n";
+  for (const StabilityRow& row : run.stability)
+    md << "| `" << row.kernel << "` | " << table_cell(row.domain) << " | " << table_cell(row.reference) << " | "
+       << table_cell(row.measure) << " | "
+       << optional_3g(row.f64) << " | " << optional_3g(row.f32) << " | " << optional_3g(row.gpu) << " |\n";
+  md << "\n";
+}
+
+}  // namespace
+
+std::string report_markdown(const BenchRun& run) {
+  std::ostringstream md;
+  write_header(md, run);
+  write_headline(md, run);
+  for (const SceneRun& scene : run.scenes) write_scene(md, run, scene);
+  write_stability(md, run);
+  return md.str();
+}
+
+}  // namespace facet::report

@@ -1,0 +1,36 @@
+// A small log–log scatter plot as standalone SVG: one labelled point per method/setting and the
+// Pareto front as a staircase (the best error reachable for a given time budget).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace facet::report {
+
+struct PlotPoint {
+  std::string label;
+  double x = 0.0;  // > 0; other points are left out (a log axis has no place for them)
+  double y = 0.0;  // > 0
+};
+
+// A log10 axis from 10^lo_decade to 10^hi_decade mapped linearly onto [pixel_lo, pixel_hi].
+struct LogAxis {
+  int lo_decade = 0, hi_decade = 1;
+  double pixel_lo = 0.0, pixel_hi = 1.0;
+  double to_pixel(double value) const;
+  // The whole decades that enclose every positive finite value (at least one decade wide).
+  static LogAxis enclosing(const std::vector<double>& values, double pixel_lo, double pixel_hi);
+};
+
+struct PlotLabels {
+  std::string title, x_axis, y_axis;
+};
+
+// Each plotted point is a <circle> with class "point" (front members also "front") and a <title>
+// naming it; the front is a <path> with class "front".
+std::string speed_error_svg(const std::vector<PlotPoint>& points, const PlotLabels& labels);
+
+// &, <, >, " escaped for XML text and attribute values.
+std::string xml_escape(const std::string& text);
+
+}  // namespace facet::report

@@ -1,0 +1,31 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// One step of a box-filtered MIP chain of vec4 texels, level l -> l + 1, in place in the texel
+// buffer: each parent texel is the mean of its (up to) 2x2 children weighted by the level-0 texels
+// each child covers, so with odd sizes (parent size ceil(size / 2), a last child that covers less)
+// every texel of every level is the plain mean of the level-0 texels it covers. The same rule as the
+// CPU reference, precompute::build_moment_mips (renderer/precompute/moment_mips.cpp).
+
+#include "layout/mip_layout.glsl"
+
+layout(local_size_x = FACET_MIP_WORKGROUP, local_size_y = FACET_MIP_WORKGROUP) in;
+layout(std430, binding = 0) buffer Texels { vec4 texels[]; };
+layout(push_constant) uniform Push { GpuMipStep mip_step; };
+
+// Level-0 texels along one axis covered by child texel i (span level-0 texels each, `size` in all).
+uint coverage(uint i, uint span, uint size) { return min((i + 1u) * span, size) - i * span; }
+
+void main() {
+  uvec2 p = gl_GlobalInvocationID.xy;
+  if (p.x >= mip_step.parent.y || p.y >= mip_step.parent.z) return;
+  uvec4 child = mip_step.child;
+  vec4 sum = vec4(0.0);
+  float total = 0.0;
+  for (uint cy = 2u * p.y; cy < min(2u * p.y + 2u, child.z); ++cy)
+    for (uint cx = 2u * p.x; cx < min(2u * p.x + 2u, child.y); ++cx) {
+      float weight = float(coverage(cx, child.w, mip_step.base.x) * coverage(cy, child.w, mip_step.base.y));
+      sum += weight * texels[child.x + cy * child.y + cx];
+      total += weight;
+    }
+  texels[mip_step.parent.x + p.y * mip_step.parent.y + p.x] = sum / total;
+}

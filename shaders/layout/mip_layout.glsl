@@ -1,0 +1,15 @@
+// Push constants of shaders/build_mips.comp, shared by GLSL and C++ (renderer/gpu/mip_builder.hpp).
+// uvec4-only, so std430 equals the C++ layout.
+#ifndef FACET_MIP_LAYOUT_GLSL
+#define FACET_MIP_LAYOUT_GLSL
+
+// One box-filter step of a MIP chain in the texel buffer: level `child` into level `parent`.
+struct GpuMipStep {
+  uvec4 child;   // offset, width, height, span: level-0 texels per child texel side (2^level)
+  uvec4 parent;  // offset, width, height, -
+  uvec4 base;    // level-0 width, height, -, -
+};
+
+#define FACET_MIP_WORKGROUP 8
+
+#endif

@@ -1,0 +1,115 @@
+// Order-restricted wavelengths (after Single 2014's "NMM" shader; derivation and tests:
+// docs/diffraction_fast_paths.md). A grating whose height repeats with periods (T_x, T_y) has DFT
+// power only on the lattice alpha_j = (2 pi j_x / T_x, 2 pi j_y / T_y). Seen through the coherence
+// window, order j reaches (u, v) only for the wavenumbers k with |k (u, v) - alpha_j| <= rho
+// (eq. F.7: a short interval around the grating equation k = alpha_j.(u,v) / |(u,v)|^2). The colour
+// integral is taken over those intervals only, each with a midpoint rule in wavelength fine enough for its peak
+// (eq. F.9), and a partition of unity over the orders (eq. F.8) keeps overlapping intervals from
+// counting any wavenumber twice. Each side evaluates the per-wavelength BRDF (diffraction_brdf.glsl)
+// at the nodes and looks up the observer table itself.
+#ifndef FACET_DIFFRACTION_ORDERS_GLSL
+#define FACET_DIFFRACTION_ORDERS_GLSL
+#include "lib/prelude.glsl"
+
+struct DiffractionOrderLattice {
+  real2 frequency;   // 2 pi / (T_x, T_y): the spacing of the grating's orders [1/nm]
+  real sigma_nm;     // coherence window
+  real reach;        // rho = sqrt(2 ln(1/tol)) / sigma: beyond it a window weight is below tol [1/nm]
+  real k_min;        // wavenumbers of the observer's range
+  real k_max;
+  real peak_step;    // midpoint step of a Gaussian peak in units of its standard deviation (eq. F.9)
+  real max_step;     // largest step in wavelength that still resolves the observer and the light [nm]
+};
+
+// The orders j in [lo, hi] (per axis) whose reach can meet the segment k (u, v), k in [k_min, k_max].
+struct DiffractionOrderSpan {
+  ivec2 lo;
+  ivec2 hi;
+};
+
+inline DiffractionOrderSpan diffraction_order_span(DiffractionOrderLattice L, real2 uv) {
+  real2 a = min(L.k_min * uv, L.k_max * uv) - real2(L.reach, L.reach);
+  real2 b = max(L.k_min * uv, L.k_max * uv) + real2(L.reach, L.reach);
+  return DiffractionOrderSpan(ivec2(ceil(a / L.frequency)), ivec2(floor(b / L.frequency)));
+}
+
+// The midpoint nodes of order j in wavelength: lambda = lambda_lo + (i + 1/2) step, i < nodes
+// (nodes = 0: order j does not reach (u, v)).
+struct DiffractionOrderInterval {
+  real lambda_lo;
+  real step;
+  int nodes;
+};
+
+inline DiffractionOrderInterval diffraction_order_interval(DiffractionOrderLattice L, real2 uv, ivec2 j) {
+  real2 alpha = real2(j) * L.frequency;
+  // |k uv - alpha|^2 <= rho^2  <=>  |uv|^2 k^2 - 2 (uv.alpha) k + |alpha|^2 - rho^2 <= 0   (F.7)
+  real uu = dot(uv, uv);
+  real b = dot(uv, alpha);
+  real c = dot(alpha, alpha) - L.reach * L.reach;
+  real lo = L.k_min;
+  real hi = L.k_max;
+  if (uu > real(0)) {
+    real disc = b * b - uu * c;
+    real root = sqrt(max(disc, real(0)));
+    lo = disc < real(0) ? L.k_max : max(lo, (b - root) / uu);
+    hi = disc < real(0) ? L.k_min : min(hi, (b + root) / uu);
+  } else if (c > real(0)) {
+    hi = lo;  // at (u, v) = 0 only the orders within rho of the origin are seen, at every k
+  }
+  if (!(hi > lo)) return DiffractionOrderInterval(real(0), real(0), 0);
+  // |S|^2 carries the squared window exp(-sigma^2 |k uv - alpha|^2): a Gaussian in k of standard
+  // deviation 1 / (sqrt(2) sigma |uv|), i.e. lambda^2 / (2 pi) times that in wavelength, narrowest
+  // at the interval's short end.
+  real lambda_lo = real(2) * FACET_PI / hi;
+  real lambda_hi = real(2) * FACET_PI / lo;
+  real deviation = uu > real(0) ? lambda_lo * lambda_lo / (real(2) * FACET_PI * FACET_SQRT2 * L.sigma_nm * sqrt(uu))
+                                 : L.max_step;
+  real step = min(L.peak_step * deviation, L.max_step);
+  int nodes = int(ceil((lambda_hi - lambda_lo) / step));
+  return DiffractionOrderInterval(lambda_lo, (lambda_hi - lambda_lo) / real(nodes), nodes);
+}
+
+inline real diffraction_order_lambda(DiffractionOrderInterval I, int i) {
+  return I.lambda_lo + (real(i) + real(0.5)) * I.step;
+}
+
+// Eq. F.8: order j's share of the wavenumber k = 2 pi / lambda, e_j / sum_j' e_j' over the orders
+// within rho of k (u, v) (e = the window weight exp(-sigma^2 |k uv - alpha|^2 / 2)). Written as
+// 1 / (1 + sum_{j' != j} e_j' / e_j) with the ratios taken in the exponent, so it stays in (0, 1]
+// where every weight underflows; j itself is among those orders at every node of its interval.
+inline real diffraction_order_share(DiffractionOrderLattice L, real2 uv, real lambda_nm, ivec2 j) {
+  real2 alpha = (real(2) * FACET_PI / lambda_nm) * uv;
+  ivec2 nearest = ivec2(floor(alpha / L.frequency + real2(real(0.5), real(0.5))));
+  ivec2 radius = ivec2(floor(real2(L.reach, L.reach) / L.frequency + real2(real(0.5), real(0.5))));
+  real half_s2 = real(-0.5) * L.sigma_nm * L.sigma_nm;
+  real2 own = alpha - real2(j) * L.frequency;
+  real own_d2 = dot(own, own);
+  real others = real(0);
+  for (int dy = -radius.y; dy <= radius.y; ++dy) {
+    for (int dx = -radius.x; dx <= radius.x; ++dx) {
+      ivec2 other = nearest + ivec2(dx, dy);
+      real2 d = alpha - real2(other) * L.frequency;
+      others += (other == j) ? real(0) : exp(half_s2 * (dot(d, d) - own_d2));
+    }
+  }
+  return real(1) / (real(1) + others);
+}
+
+// The observer table: (xbar, ybar, zbar) S(lambda) / Y_white at 1 nm steps from lambda_0; linear
+// interpolation between entries `index` and `index + 1` (valid false outside the table).
+struct DiffractionObserverLookup {
+  int index;
+  real f;
+  bool valid;
+};
+
+inline DiffractionObserverLookup diffraction_observer_lookup(real lambda_nm, real lambda0_nm, int entries) {
+  real t = lambda_nm - lambda0_nm;
+  int i = int(floor(t));
+  bool valid = t >= real(0) && i < entries - 1;
+  int index = clamp(i, 0, entries - 2);
+  return DiffractionObserverLookup(index, t - real(index), valid);
+}
+
+#endif

@@ -1,0 +1,136 @@
+// The per-pixel model of a colour-mapped Gaussian microsurface (Heitz et al. 2013/2014, seeds/000 and
+// seeds/001): the footprint's heights N(h_mean, h_sigma^2) and slopes N(s_mean, Sigma) from its moments,
+// the visible slopes D_s and Smith's Lambda for the view, the visible heights (CDF C^(1 + Lambda_v)),
+// the light's Lambda_l, and the quadrature nodes over which a shader integrates its colour maps, plus
+// the LEAN-convolved Beckmann lobe. Derivation, accuracy and tests: docs/microsurface_filtering.md.
+#ifndef FACET_MICROSURFACE_FILTER_GLSL
+#define FACET_MICROSURFACE_FILTER_GLSL
+#include "lib/prelude.glsl"
+#include "lib/gaussian_masking.glsl"
+#include "lib/visible_slope.glsl"
+
+// Nodes per axis of the Gauss-Hermite grid over D_s, and midpoint nodes of the visible-height rule.
+#define MS_SLOPE_NODES 4
+#define MS_HEIGHT_NODES 8
+// Variance floors: a zero-variance footprint (a point) keeps every ratio of visible_slope finite; the
+// floors move slopes by 1e-6 and heights by 1e-9 world units, far below what a pixel resolves.
+#define MS_SLOPE_VARIANCE_MIN real(1e-12)
+#define MS_HEIGHT_SIGMA_MIN real(1e-9)
+
+struct MicrosurfaceStatistics {
+  real h_mean;
+  real h_sigma;
+  real2 s_mean;
+  real3 s_cov;  // (var_x, var_y, c_xy)
+};
+
+// From the footprint's moments m0 = (E[h], E[h^2], E[s_x], E[s_y]) and m1 = (E[s_x^2], E[s_y^2],
+// E[s_x s_y], -): the Gaussians of heights and slopes, eq. (1) of seeds/000 (LEAN mapping).
+inline MicrosurfaceStatistics microsurface_statistics(real4 m0, real4 m1) {
+  real h_var = max(m0.y - m0.x * m0.x, real(0));
+  real var_x = max(m1.x - m0.z * m0.z, real(0)) + MS_SLOPE_VARIANCE_MIN;
+  real var_y = max(m1.y - m0.w * m0.w, real(0)) + MS_SLOPE_VARIANCE_MIN;
+  real c_max = sqrt(var_x * var_y);
+  real c_xy = clamp(m1.z - m0.z * m0.w, -c_max, c_max);
+  return MicrosurfaceStatistics(m0.x, max(sqrt(h_var), MS_HEIGHT_SIGMA_MIN), real2(m0.z, m0.w),
+                                real3(var_x, var_y, c_xy));
+}
+
+// (theta, phi) of a unit direction in the plane frame (tangent, bitangent, normal); phi = 0 along the
+// normal, where atan(0, 0) is undefined.
+inline real2 microsurface_angles(real3 w) {
+  real r = sqrt(w.x * w.x + w.y * w.y);
+  return real2(atan(r, w.z), r > real(0) ? atan(w.y, w.x) : real(0));
+}
+
+// Unit facet normal of slope s = grad z: n ~ (-s_x, -s_y, 1) (seeds/000 eq. 1's convention).
+inline real3 microsurface_normal(real2 s) { return normalize(real3(-s.x, -s.y, real(1))); }
+
+struct MicrosurfaceVisibility {
+  VisibleSlope ds;  // the visible slopes for the view, eqs. (16), (42)-(46) of seeds/000
+  real lambda_v;    // Smith's Lambda of the view (docs/masking.md)
+  real lambda_l;    // ... of the light
+  real lit;         // P(lit | visible) = E_vis[C(h)^Lambda_l] = (1 + Lambda_v)/(1 + Lambda_v + Lambda_l)
+};
+
+// v, l: unit directions toward the viewer and the light in the plane frame (v.z > 0).
+inline MicrosurfaceVisibility microsurface_visibility(MicrosurfaceStatistics s, real3 v, real3 l) {
+  real2 view = microsurface_angles(v);
+  real2 light = microsurface_angles(l);
+  real lambda_v = gaussian_smith_lambda(s.s_mean, s.s_cov, view.x, view.y);
+  // A light below the horizon of the mean plane lights nothing (Lambda_l = inf: lit = 0).
+  real lambda_l = l.z > real(0) ? gaussian_smith_lambda(s.s_mean, s.s_cov, light.x, light.y)
+                                : exp(GM_LOG_LAMBDA_MAX);
+  real lit = (real(1) + lambda_v) / (real(1) + lambda_v + lambda_l);
+  return MicrosurfaceVisibility(visible_slope(s.s_mean, s.s_cov, view.x, view.y), lambda_v, lambda_l, lit);
+}
+
+// Node k of MS_HEIGHT_NODES of the heights with CDF C^(1 + lambda): in u = C^(1 + lambda) every
+// such law is uniform on (0, 1), so E[g(h)] = int_0^1 g(h(u)) du, taken by the midpoint rule.
+// lambda = Lambda_v gives the visible heights; lambda = Lambda_v + Lambda_l the visible and lit ones
+// (E_vis[g C^Lambda_l] = lit * E_{C^(1 + Lambda_v + Lambda_l)}[g]).
+inline real microsurface_height_node(int k, real h_mean, real h_sigma, real lambda) {
+  real u = (real(k) + real(0.5)) / real(MS_HEIGHT_NODES);
+  return visible_height_sample(u, h_mean, h_sigma, lambda);
+}
+
+// The lit part E_vis[g C^Lambda_l] = int_0^1 g(h(u)) u^a du, a = Lambda_l/(1 + Lambda_v), on the
+// visible nodes themselves (product rule: u^a integrated exactly over node k's cell, g held constant):
+// lit * sum_k g(h_k) w_k, w_k = ((k + 1)/K)^(1 + a) - (k/K)^(1 + a), sum w_k = 1. Used while a is at most
+// MS_LIT_SHARED_MAX (u^a varies slowly); beyond, the weight piles into the last cell and the shader
+// takes the nodes of lambda = Lambda_v + Lambda_l instead.
+const real MS_LIT_SHARED_MAX = real(1);
+
+inline real microsurface_lit_exponent(MicrosurfaceVisibility vis) {
+  return vis.lambda_l / (real(1) + vis.lambda_v);
+}
+
+inline real microsurface_lit_weight(int k, real a) {
+  real K = real(MS_HEIGHT_NODES);
+  return pow((real(k) + real(1)) / K, real(1) + a) - pow(real(k) / K, real(1) + a);
+}
+
+struct MicrosurfaceSlopeNode {
+  real2 s;
+  real weight;
+};
+
+// Gauss-Hermite (probabilists') abscissa and weight i of MS_SLOPE_NODES = 4: roots of He_4,
+// x^2 = 3 -+ sqrt(6), weights 4!/(16 He_3(x)^2).
+inline real2 microsurface_hermite(int i) {
+  real x = i == 0 || i == 3 ? real(2.3344142183389773) : real(0.74196378430272586);
+  real w = i == 0 || i == 3 ? real(0.045875854768068492) : real(0.45412414523193151);
+  return real2(i < 2 ? -x : x, w);
+}
+
+// Node (i, j) of the Gauss-Hermite grid over the Gaussian approximation N(mean, cov) of D_s: the
+// standard grid mapped through the Cholesky factor of cov.
+inline MicrosurfaceSlopeNode microsurface_slope_node(VisibleSlope ds, int i, int j) {
+  real2 a = microsurface_hermite(i);
+  real2 b = microsurface_hermite(j);
+  real l00 = sqrt(ds.cov.x);
+  real l10 = l00 > real(0) ? ds.cov.z / l00 : real(0);
+  real l11 = sqrt(max(ds.cov.y - l10 * l10, real(0)));
+  return MicrosurfaceSlopeNode(ds.mean + real2(l00 * a.x, l10 * a.x + l11 * b.x), a.y * b.y);
+}
+
+// The Beckmann lobe (roughness alpha along the plane's tangent and bitangent) on the footprint's
+// slopes, LEAN-convolved (Olano and Baker 2010): slopes N(s_mean, Sigma + alpha^2/2). Returns
+// f cos_i = D(h) G2/(4 cos_o) with D(h) = p(slope of h)/h_z^4 and the height-correlated
+// G2 = 1/(1 + Lambda_i + Lambda_o) of the same Gaussian; 0 when l or v is below the plane.
+inline real microsurface_specular(MicrosurfaceStatistics s, real2 alpha, real3 l, real3 v) {
+  if (l.z <= real(0) || v.z <= real(0)) return real(0);
+  real3 cov = s.s_cov + real3(real(0.5) * alpha.x * alpha.x, real(0.5) * alpha.y * alpha.y, real(0));
+  real3 h = normalize(l + v);
+  real2 d = real2(-h.x / h.z, -h.y / h.z) - s.s_mean;
+  real det = max(cov.x * cov.y - cov.z * cov.z, real(0.25) * alpha.x * alpha.x * alpha.y * alpha.y);
+  real q = (cov.y * d.x * d.x - real(2) * cov.z * d.x * d.y + cov.x * d.y * d.y) / det;
+  real h2 = h.z * h.z;
+  real D = real(0.5) * FACET_INV_PI * exp(real(-0.5) * q) / (sqrt(det) * h2 * h2);
+  real2 light = microsurface_angles(l);
+  real2 view = microsurface_angles(v);
+  real G2 = gaussian_smith_g2(s.s_mean, cov, light.x, light.y, view.x, view.y);
+  return D * G2 / (real(4) * v.z);
+}
+
+#endif

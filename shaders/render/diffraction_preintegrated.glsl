@@ -1,0 +1,45 @@
+// The pre-integrated diffraction colour from tables in storage buffers (lib/diffraction_preintegrated.glsl;
+// the C++ twin is evaluate_preintegrated in renderer/diffraction/preintegrated_tables.cpp). The
+// includer declares `uint diffraction_preintegrated_words[]` (the tables' packed words) and
+// `float diffraction_preintegrated_scales[]` (one scale per polynomial coefficient).
+#ifndef FACET_RENDER_DIFFRACTION_PREINTEGRATED_GLSL
+#define FACET_RENDER_DIFFRACTION_PREINTEGRATED_GLSL
+#include "lib/diffraction_preintegrated.glsl"
+
+// Where one material's tables live and what the kernel needs besides the grid.
+struct PreintegratedSource {
+  PreintegratedGrid grid;
+  uint first_word;   // of the material's table in diffraction_preintegrated_words
+  uint first_scale;  // of its terms scales in diffraction_preintegrated_scales
+  float w_centre;
+  float floor_lambda_nm;
+  float sigma_nm;
+  float hs_nm;
+  float R0;
+};
+
+vec3 diffraction_preintegrated_corner(PreintegratedSource s, PreintegratedCell c, int du, int dv, int p) {
+  uint k = s.first_word + uint(preintegrated_word_index(s.grid, c, du, dv, p));
+  float scale = diffraction_preintegrated_scales[s.first_scale + uint(p)];
+  return s.grid.words == 2
+             ? preintegrated_unpack_half(diffraction_preintegrated_words[k], diffraction_preintegrated_words[k + 1u], scale)
+             : preintegrated_unpack_float(diffraction_preintegrated_words[k], diffraction_preintegrated_words[k + 1u],
+                                          diffraction_preintegrated_words[k + 2u], scale);
+}
+
+// Linear sRGB for wi, wr (unit vectors toward the light and the viewer in the grating's frame, z >= 0).
+vec3 diffraction_preintegrated_rgb(PreintegratedSource s, vec3 wi, vec3 wr) {
+  DiffractionGeometry g = diffraction_geometry(wi, wr, s.floor_lambda_nm, s.sigma_nm, s.hs_nm);
+  PreintegratedCell c = preintegrated_cell(s.grid, preintegrated_uv(wi, wr));
+  float delta = g.w - s.w_centre;
+  vec3 acc = vec3(0.0);
+  for (int p = s.grid.terms - 1; p >= 0; --p) {
+    acc = preintegrated_horner_step(acc, delta, c, diffraction_preintegrated_corner(s, c, 0, 0, p),
+                                    diffraction_preintegrated_corner(s, c, 1, 0, p),
+                                    diffraction_preintegrated_corner(s, c, 0, 1, p),
+                                    diffraction_preintegrated_corner(s, c, 1, 1, p));
+  }
+  return preintegrated_linear_srgb(g, acc, s.sigma_nm, s.R0);
+}
+
+#endif

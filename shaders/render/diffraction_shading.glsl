@@ -1,0 +1,76 @@
+// The diffracted light of "diffraction" materials in the direct pass (docs/diffraction.md,
+// "Rendering") and docs/diffraction_fast_paths.md: bindings 11-16, compiled in only when kHasDiffraction (constant_id 4) is set.
+// The per-pixel geometry (the grating frame, wi and wr in it) is computed once; then one switch on
+// kDiffractionMethod (constant_id 5) picks how the spectrum becomes a colour:
+//   0 spectral   sum over the material's wavelength samples of the Taylor BRDF times their XYZ weights
+//   1 preintegrated  the material's wavelength-integrated tables (bindings 14, 15), a polynomial in w
+//   2 orders     the Taylor BRDF at the wavelengths near the grating's orders (observer: binding 16);
+//                spectral for a grating the host found not periodic
+// The includer declares kHasDiffraction and kDiffractionMethod before including this file.
+#ifndef FACET_RENDER_DIFFRACTION_SHADING_GLSL
+#define FACET_RENDER_DIFFRACTION_SHADING_GLSL
+#include "layout/diffraction_layout.glsl"
+#include "lib/diffraction_frame.glsl"
+#include "render/scene_bindings.glsl"
+
+layout(std430, binding = 11) readonly buffer DiffractionCoefficients { vec2 diffraction_coefficients[]; };
+layout(std430, binding = 12) readonly buffer DiffractionMaterials { GpuDiffractionMaterial diffraction_materials[]; };
+layout(std430, binding = 13) readonly buffer DiffractionWavelengths { vec4 diffraction_wavelengths[]; };  // lambda, XYZ
+layout(std430, binding = 14) readonly buffer DiffractionPreintegratedWords { uint diffraction_preintegrated_words[]; };
+layout(std430, binding = 15) readonly buffer DiffractionPreintegratedScales { float diffraction_preintegrated_scales[]; };
+layout(std430, binding = 16) readonly buffer DiffractionObserver { vec4 diffraction_observer[]; };  // XYZ per nm
+
+#include "render/diffraction_orders.glsl"
+#include "render/diffraction_preintegrated.glsl"
+#include "render/diffraction_taylor.glsl"
+
+const uint kDiffractionSpectral = 0u;
+const uint kDiffractionPreintegrated = 1u;
+const uint kDiffractionOrders = 2u;
+
+// sum_i BRDF(lambda_i) xyz_weight_i over the material's wavelength samples.
+vec3 diffraction_spectral_xyz(GpuDiffractionMaterial m, vec3 wi, vec3 wr) {
+  vec3 xyz = vec3(0.0);
+  for (uint i = m.offsets.y; i < m.offsets.y + m.offsets.z; ++i) {
+    vec4 sample_i = diffraction_wavelengths[i];
+    xyz += diffraction_taylor_value(m.table, m.offsets.x, wi, wr, sample_i.x).brdf * sample_i.yzw;
+  }
+  return xyz;
+}
+
+// Radiance diffracted toward v by diffraction material `index` at a point with shading normal n
+// (facing the viewer) and tangent dpdu, lit from l with the light's visibility.
+vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float visibility) {
+  DiffractionDirections d = diffraction_directions(n, dpdu, l, v);
+  if (!d.lit || visibility == 0.0) return vec3(0.0);
+  GpuDiffractionMaterial m = diffraction_materials[index];
+  vec3 rgb = vec3(0.0);
+  switch (kDiffractionMethod) {
+    case kDiffractionPreintegrated:
+      rgb = diffraction_preintegrated_rgb(
+          PreintegratedSource(PreintegratedGrid(m.preintegrated_grid.xy, m.preintegrated_grid.zw, m.preintegrated_shape.x,
+                                                m.preintegrated_shape.y, m.preintegrated_shape.z, m.preintegrated_shape.w),
+                              m.fast_offsets.x, m.fast_offsets.y, m.preintegrated_scalars.x, m.preintegrated_scalars.y,
+                              m.preintegrated_scalars.z, m.preintegrated_scalars.w, m.fast_scalars.x),
+          d.wi, d.wr);
+      break;
+    case kDiffractionOrders:
+      if (m.fast_scalars.z != 0.0) {
+        DiffractionOrderLattice lattice = DiffractionOrderLattice(m.order_lattice0.xy, m.order_lattice0.z, m.order_lattice0.w,
+                                                                  m.order_lattice1.x, m.order_lattice1.y,
+                                                                  m.order_lattice1.z, m.order_lattice1.w);
+        OrderObserver observer = OrderObserver(m.fast_offsets.z, int(m.fast_offsets.w), m.fast_scalars.y);
+        rgb = spectral_xyz_to_linear_srgb(diffraction_orders_xyz(lattice, m.table, m.offsets.x, observer, d.wi, d.wr));
+        break;
+      }
+      rgb = spectral_xyz_to_linear_srgb(diffraction_spectral_xyz(m, d.wi, d.wr));
+      break;
+    case kDiffractionSpectral:
+    default:
+      rgb = spectral_xyz_to_linear_srgb(diffraction_spectral_xyz(m, d.wi, d.wr));
+      break;
+  }
+  return diffraction_radiance_rgb(rgb, d.wi.z, globals.light_irradiance.rgb, visibility);
+}
+
+#endif

@@ -1,0 +1,64 @@
+// Stam's diffraction BRDF at one wavelength from the spectral tables in a storage buffer: the
+// window sum over the bins near k(u, v) of each bin's Taylor sum (lib/diffraction_brdf.glsl; the
+// C++ twin is evaluate_taylor in renderer/diffraction/diffraction_eval.cpp). Used by the render
+// pass and by eval_diffraction.comp; the includer declares `vec2 diffraction_coefficients[]`.
+#ifndef FACET_RENDER_DIFFRACTION_TAYLOR_GLSL
+#define FACET_RENDER_DIFFRACTION_TAYLOR_GLSL
+#include "layout/diffraction_layout.glsl"
+#include "lib/diffraction_brdf.glsl"
+#include "lib/diffraction_table.glsl"
+
+// H_n(j) of the tables starting at diffraction_coefficients[first].
+vec2 diffraction_coefficient(DiffractionTableInfo info, uint first, int n, int jx, int jy) {
+  DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, info.shape.x, info.shape.w);
+  vec2 c = diffraction_coefficients[first + uint(e.index)];
+  return e.conjugate ? vec2(c.x, -c.y) : c;
+}
+
+// Lavapipe ends every loop of an invocation once all loops together have run 65535 iterations
+// (gallivm's LP_MAX_TGSI_LOOP_ITERATIONS, shared by every loop of a shader), silently. So the
+// loops here are as few as the arithmetic allows: one loop over the (2r+1)^2 bins, and the Taylor
+// steps unrolled by kDiffractionTaylorUnroll. diffraction_loop_iterations
+// (renderer/gpu/diffraction_upload.cpp) counts them per wavelength: 1 + bins (1 + ceil((N-1)/8)).
+const int kDiffractionTaylorUnroll = 8;
+
+#define FACET_DIFFRACTION_GUARDED_STEP(k) \
+  if (n + k < N) t = diffraction_taylor_step(t, g, diffraction_coefficient(info, first, n + k, jx, jy))
+
+DiffractionTaylor diffraction_taylor_sum(DiffractionTaylor t, DiffractionGeometry g, DiffractionTableInfo info,
+                                         uint first, int jx, int jy) {
+  int N = info.shape.y;
+  for (int n = 1; n < N; n += kDiffractionTaylorUnroll) {  // written out: an inner loop would count
+    t = diffraction_taylor_step(t, g, diffraction_coefficient(info, first, n, jx, jy));
+    FACET_DIFFRACTION_GUARDED_STEP(1);
+    FACET_DIFFRACTION_GUARDED_STEP(2);
+    FACET_DIFFRACTION_GUARDED_STEP(3);
+    FACET_DIFFRACTION_GUARDED_STEP(4);
+    FACET_DIFFRACTION_GUARDED_STEP(5);
+    FACET_DIFFRACTION_GUARDED_STEP(6);
+    FACET_DIFFRACTION_GUARDED_STEP(7);
+  }
+  return t;
+}
+#undef FACET_DIFFRACTION_GUARDED_STEP
+
+// wi, wr: unit vectors toward the light and the viewer in the grating's frame, z >= 0.
+DiffractionValue diffraction_taylor_value(DiffractionTableInfo info, uint first, vec3 wi, vec3 wr, float lambda_nm) {
+  int J = info.shape.x, r = info.shape.z;
+  float T = info.scales.x, sigma = info.scales.y;
+  DiffractionGeometry g = diffraction_geometry(wi, wr, lambda_nm, sigma, info.scales.z);
+  int jx0 = diffraction_nearest_bin(g.alpha.x, T);
+  int jy0 = diffraction_nearest_bin(g.alpha.y, T);
+  int side = 2 * r + 1;
+  DiffractionField field = DiffractionField(vec2(0.0), vec2(0.0));
+  for (int b = 0; b < side * side; ++b) {
+    int jx = jx0 - r + b % side, jy = jy0 - r + b / side;
+    if (!diffraction_table_entry(0, jx, jy, J, 1).valid) continue;
+    float weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(jx, jy, T), sigma);
+    DiffractionTaylor t = diffraction_taylor_start(g, diffraction_coefficient(info, first, 0, jx, jy));
+    field = diffraction_field_add(field, weight, diffraction_taylor_sum(t, g, info, first, jx, jy));
+  }
+  return diffraction_value(g, field, sigma, info.scales.w);
+}
+
+#endif

@@ -1,0 +1,185 @@
+// Colour-mapped microsurfaces in the direct pass (docs/microsurface_filtering.md): a height field on a
+// finite plane, shaded by the method of kTextureMethod (declared by the including shader):
+//   0 naive     (H1)-(H2) at the hit: colour maps of z and |grad z|, Lambert and Beckmann with the
+//               micro-normal, no masking or micro-shadowing
+//   1 mip       the footprint's mean z and mean slope through the same point shading (the common wrong answer)
+//   2 colormip  the footprint's mean albedo (MIP chain of the colour-mapped field), mean slope
+//   3, 4 filtered  the footprint's Gaussian heights and slopes (lib/microsurface_filter.glsl): visible
+//               slopes D_s and visible heights for the view, Smith shadowing for the light, the colour
+//               maps integrated against them, the LEAN-convolved Beckmann lobe
+// Material fields: renderer/gpu/microsurface_upload.hpp.
+#ifndef FACET_RENDER_MICROSURFACE_SHADING_GLSL
+#define FACET_RENDER_MICROSURFACE_SHADING_GLSL
+#include "lib/microsurface_filter.glsl"
+#include "lib/texture_footprint.glsl"
+#include "render/scene_bindings.glsl"
+#include "render/texture_sampling.glsl"
+
+// (H1)-(H2) of docs/assets.md at texel coordinates q (vertex (i, j) at q = (i, j)): (z, dz/dx, dz/dy),
+// z about the material's z_offset, slopes per world unit (delta = texel size).
+vec3 microsurface_point(uint vertex_level, vec2 q, float delta) {
+  uvec4 info = texture_levels[vertex_level].info;
+  int w = int(info.y), h = int(info.z);
+  vec2 cell = floor(q);
+  vec2 f = q - cell;
+  int i0 = int(mod(cell.x, float(w))), j0 = int(mod(cell.y, float(h)));
+  int i1 = (i0 + 1) % w, j1 = (j0 + 1) % h;
+  float z00 = texels[info.x + uint(j0 * w + i0)].x, z10 = texels[info.x + uint(j0 * w + i1)].x;
+  float z01 = texels[info.x + uint(j1 * w + i0)].x, z11 = texels[info.x + uint(j1 * w + i1)].x;
+  float z = mix(mix(z00, z10, f.x), mix(z01, z11, f.x), f.y);
+  return vec3(z, mix(z10 - z00, z11 - z01, f.y) / delta, mix(z01 - z00, z11 - z10, f.x) / delta);
+}
+
+// height_colormap(z) slope_colormap(|s|), each factor only when the material has it.
+vec3 microsurface_height_colour(GpuMaterial m, float z) {
+  return m.texture.z == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormaps[m.texture.z], z + m.params.z);
+}
+vec3 microsurface_slope_colour(GpuMaterial m, vec2 s) {
+  return m.texture.w == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormaps[m.texture.w], length(s));
+}
+
+struct MicrosurfaceMoments {
+  vec4 m0;  // E[z], E[z^2], E[s_x], E[s_y]
+  vec4 m1;  // E[s_x^2], E[s_y^2], E[s_x s_y], -
+};
+
+MicrosurfaceMoments microsurface_point_moments(vec3 p) {
+  return MicrosurfaceMoments(vec4(p.x, p.x * p.x, p.yz), vec4(p.y * p.y, p.z * p.z, p.y * p.z, 0.0));
+}
+
+// A point (z, s_x, s_y) as statistics: no variance (up to the floors of microsurface_filter.glsl).
+MicrosurfaceStatistics microsurface_point_statistics(vec3 p) {
+  MicrosurfaceMoments point = microsurface_point_moments(p);
+  return microsurface_statistics(point.m0, point.m1);
+}
+
+// The moments of one footprint tap at texel coordinates q: trilinear in the moment chains at lod,
+// blended toward the point value at q with `point_weight` (footprints narrower than two texels: a
+// footprint within one texel sees the bilinear surface at its point, so filtered equals naive there).
+MicrosurfaceMoments microsurface_tap_moments(GpuMaterial m, vec2 q, vec2 size, float lod, float point_weight) {
+  uint first = m.texture.x + 1u, count = m.texture.y;
+  vec2 uv = q / size;
+  // mip and colormip use the means only: the second-moment chain is read by filtered alone.
+  MicrosurfaceMoments chain = MicrosurfaceMoments(
+      sample_trilinear(first, count, uv, lod), kTextureMethod >= 3u ? sample_trilinear(first + count, count, uv, lod) : vec4(0.0));
+  if (point_weight <= 0.0) return chain;
+  MicrosurfaceMoments point = microsurface_point_moments(microsurface_point(m.texture.x, q, m.albedo.w));
+  return MicrosurfaceMoments(mix(chain.m0, point.m0, point_weight), mix(chain.m1, point.m1, point_weight));
+}
+
+// Lambert with the facet normal of slope s plus the Beckmann lobe on slopes `stats`; v, l in the plane frame.
+vec3 microsurface_facet_radiance(GpuMaterial m, vec3 albedo, MicrosurfaceStatistics stats, vec3 v, vec3 l,
+                                 float visibility) {
+  float cos_l = max(dot(microsurface_normal(stats.s_mean), l), 0.0);
+  vec3 diffuse = albedo * FACET_INV_PI * (globals.light_irradiance.rgb * (cos_l * visibility) + globals.ambient.rgb);
+  if (m.kind.y == 0u) return diffuse;
+  return diffuse + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_specular(stats, m.params.xy, l, v) * visibility);
+}
+
+// The filtered radiance of a footprint with Gaussian statistics `stats` (docs/microsurface_filtering.md
+// eq. M7): E/pi V H_lit S_cos + E_amb/pi H S + V E R f_spec.
+vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats, vec3 v, vec3 l, float visibility) {
+  MicrosurfaceVisibility vis = microsurface_visibility(stats, v, l);
+  vec3 slope_sum = vec3(0.0), slope_cos_sum = vec3(0.0);
+  for (int i = 0; i < MS_SLOPE_NODES; ++i)
+    for (int j = 0; j < MS_SLOPE_NODES; ++j) {
+      MicrosurfaceSlopeNode node = microsurface_slope_node(vis.ds, i, j);
+      vec3 a = node.weight * microsurface_slope_colour(m, node.s);
+      slope_sum += a;
+      slope_cos_sum += a * max(dot(microsurface_normal(node.s), l), 0.0);
+    }
+  vec3 heights = vec3(1.0), heights_lit = vec3(vis.lit);
+  if (m.texture.z != FACET_NO_COLORMAP) {
+    heights = vec3(0.0);
+    heights_lit = vec3(0.0);
+    float a = microsurface_lit_exponent(vis);
+    bool lit_on_visible_nodes = a <= MS_LIT_SHARED_MAX;
+    for (int k = 0; k < MS_HEIGHT_NODES; ++k) {
+      vec3 c = microsurface_height_colour(m, microsurface_height_node(k, stats.h_mean, stats.h_sigma, vis.lambda_v));
+      heights += c;
+      heights_lit += lit_on_visible_nodes ? microsurface_lit_weight(k, a) * c
+                            : microsurface_height_colour(m, microsurface_height_node(
+                                                                k, stats.h_mean, stats.h_sigma, vis.lambda_v + vis.lambda_l)) /
+                                  float(MS_HEIGHT_NODES);
+    }
+    heights /= float(MS_HEIGHT_NODES);
+    heights_lit *= vis.lit;
+  }
+  vec3 radiance = FACET_INV_PI * (globals.light_irradiance.rgb * visibility * heights_lit * slope_cos_sum +
+                                  globals.ambient.rgb * heights * slope_sum);
+  if (m.kind.y == 0u) return radiance;
+  return radiance + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_specular(stats, m.params.xy, l, v) * visibility);
+}
+
+// The radiance of microsurface `m` on `plane` hit at p by the ray o + t d; d_dx, d_dy: the rays
+// through the neighbouring pixel positions (the footprint); visibility of the light from p.
+vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy,
+                           vec3 l_world, float visibility) {
+  vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
+  vec3 r = p - plane.point.xyz;
+  float delta = m.albedo.w;
+  uvec4 level0 = texture_levels[m.texture.x].info;
+  vec2 size = vec2(level0.yz);
+  // Texel coordinates from the rectangle's (-w/2, -h/2) corner, where the field's vertex (0, 0) sits.
+  vec2 q = (vec2(dot(r, t), dot(r, b)) + plane.uv_half_size.zw) / delta;
+  vec3 v = vec3(dot(-d, t), dot(-d, b), dot(-d, n)) / length(d);
+  vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, n));
+  // Seen from below, the field is shaded as its mirror image (the upper side's statistics).
+  if (v.z < 0.0) {
+    v.z = -v.z;
+    l.z = -l.z;
+  }
+  v.z = max(v.z, 1e-6);
+  if (kTextureMethod == 0u) {
+    vec3 point = microsurface_point(m.texture.x, q, delta);
+    MicrosurfaceStatistics stats = microsurface_point_statistics(point);
+    vec3 albedo = microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz);
+    return microsurface_facet_radiance(m, albedo, stats, v, l, visibility);
+  }
+  // The footprint in field uv (period = the field), as for colour-mapped textures.
+  vec3 dpdu = t * (size.x * delta), dpdv = b * (size.y * delta);
+  vec2 duv_dx = uv_differential(o, d_dx, p, n, dpdu, dpdv);
+  vec2 duv_dy = uv_differential(o, d_dy, p, n, dpdu, dpdv);
+  // Parallax: the pixel's rays meet the real surface displaced from the flat-plane hit by z cot(theta_v)
+  // along the view's azimuth, a spread of standard deviation sigma_h cot(theta_v) (sigma_h of the whole
+  // field: the coarsest moment level); the box of that spread, sqrt(12) sigma_h cot(theta_v) long, is
+  // added to the footprint axis closer to the view's azimuth. Zero straight down, large at grazing views.
+  vec4 field = texels[texture_levels[m.texture.x + m.texture.y].info.x];
+  vec2 parallax = sqrt(12.0) * sqrt(max(field.y - field.x * field.x, 0.0)) * (v.xy / v.z) / (size * delta);
+  float along_x = abs(dot(duv_dx, parallax)) * length(duv_dy), along_y = abs(dot(duv_dy, parallax)) * length(duv_dx);
+  if (along_x >= along_y)
+    duv_dx += dot(duv_dx, parallax) >= 0.0 ? parallax : -parallax;
+  else
+    duv_dy += dot(duv_dy, parallax) >= 0.0 ? parallax : -parallax;
+  AnisotropicFootprint f = anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kMaxAnisotropicTaps);
+  float minor = min(length(duv_dx * size), length(duv_dy * size));
+  float width = max(minor, length(f.major * size) / f.taps);
+  float point_weight = clamp(2.0 - width, 0.0, 1.0);
+  MicrosurfaceMoments sum = MicrosurfaceMoments(vec4(0.0), vec4(0.0));
+  vec3 albedo = vec3(0.0);
+  for (float k = 0.0; k < f.taps; k += 1.0) {
+    vec2 tap = q + f.major * size * ((k + 0.5) / f.taps - 0.5);
+    MicrosurfaceMoments tm = microsurface_tap_moments(m, tap, size, f.lod, point_weight);
+    sum.m0 += tm.m0;
+    sum.m1 += tm.m1;
+    if (kTextureMethod == 2u) {
+      vec3 chain = sample_trilinear(m.texture.x + 1u + 2u * m.texture.y, m.texture.y, tap / size, f.lod).rgb;
+      if (point_weight > 0.0) {
+        vec3 point = microsurface_point(m.texture.x, tap, delta);
+        chain = mix(chain, microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz), point_weight);
+      }
+      albedo += chain;
+    }
+  }
+  MicrosurfaceStatistics stats = microsurface_statistics(sum.m0 / f.taps, sum.m1 / f.taps);
+  if (kTextureMethod >= 3u) return microsurface_filtered_radiance(m, stats, v, l, visibility);
+  // mip and colormip: the mean slope as a point, no variance.
+  MicrosurfaceStatistics mean_point = microsurface_point_statistics(vec3(stats.h_mean, stats.s_mean));
+  if (kTextureMethod == 1u)
+    albedo = microsurface_height_colour(m, stats.h_mean) * microsurface_slope_colour(m, stats.s_mean);
+  else
+    albedo /= f.taps;
+  return microsurface_facet_radiance(m, albedo, mean_point, v, l, visibility);
+}
+
+#endif

@@ -1,0 +1,70 @@
+// Runs shaders/render/diffraction_orders.glsl on the GPU through the test probe
+// (tests/diffraction/shaders/orders_probe.comp): used by the GPU test and the benchmark.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "diffraction/order_wavelengths.hpp"
+#include "orders_probe.spv.h"
+#include "vk/buffer.hpp"
+#include "vk/context.hpp"
+#include "vk/kernel.hpp"
+
+namespace facet::test {
+
+struct OrdersProbePush {
+  glm::vec4 lattice0;
+  glm::vec4 lattice1;
+  glm::ivec4 shape;
+  glm::vec4 scales;
+  float lambda0_nm;
+  int entries;
+  uint32_t count;
+};
+
+struct OrdersProbeRun {
+  std::vector<glm::dvec3> rgb;
+  double gpu_ms;
+};
+
+inline OrdersProbeRun run_orders_probe(vk::Context& context, const diffraction::SpectralTables& tables,
+                                       const diffraction::OrderWavelengths& plan,
+                                       const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs) {
+  std::vector<glm::vec4> queries, observer;
+  for (const auto& [wi, wr] : pairs) {
+    queries.emplace_back(glm::vec3(wi), 0.0f);
+    queries.emplace_back(glm::vec3(wr), 0.0f);
+  }
+  for (const glm::dvec3& o : plan.observer) observer.emplace_back(glm::vec3(o), 0.0f);
+  const std::vector<glm::vec2> coefficients = tables.coefficients_f32();
+  auto in = vk::Buffer::from(context, std::span<const glm::vec4>(queries));
+  vk::Buffer out(context, pairs.size() * sizeof(glm::vec4));
+  auto table = vk::Buffer::from(context, std::span<const glm::vec2>(coefficients));
+  auto observer_buffer = vk::Buffer::from(context, std::span<const glm::vec4>(observer));
+  vk::Kernel kernel(context, {.name = "orders_probe",
+                              .spirv = orders_probe_spv,
+                              .buffer_count = 4,
+                              .push_constant_bytes = sizeof(OrdersProbePush),
+                              .specialization = {}});
+  const auto& L = plan.lattice;
+  const diffraction::DiffractionTableInfo info = tables.info();
+  const OrdersProbePush push{glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach),
+                             glm::vec4(L.k_min, L.k_max, L.peak_step, L.max_step),
+                             info.shape,
+                             info.scales,
+                             float(plan.lambda0_nm),
+                             static_cast<int>(plan.observer.size()),
+                             static_cast<uint32_t>(pairs.size())};
+  const std::array<const vk::Buffer*, 4> bindings = {&in, &out, &table, &observer_buffer};
+  OrdersProbeRun run;
+  run.gpu_ms = kernel.dispatch(bindings, &push, {static_cast<uint32_t>((pairs.size() + 63) / 64), 1, 1});
+  std::vector<glm::vec4> raw(pairs.size());
+  out.download(raw.data(), raw.size() * sizeof(glm::vec4));
+  for (const auto& r : raw) run.rgb.emplace_back(glm::vec3(r));
+  return run;
+}
+
+}  // namespace facet::test

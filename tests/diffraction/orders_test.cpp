@@ -1,0 +1,273 @@
+// Order-restricted wavelengths (docs/diffraction_fast_paths.md) against the per-wavelength path on
+// sinusoidal, rectangular and crossed gratings (colours, peak positions, cost), the pieces of the
+// kernel against brute force (patch periods, intervals, partition of unity), the GPU against the
+// double twin, and the fallback of a height field that is not periodic.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "diffraction/cie_tables.hpp"
+#include "diffraction/order_wavelengths.hpp"
+#include "diffraction_cases.hpp"
+#include "orders_probe.hpp"
+#include "support/vulkan_fixture.hpp"
+
+namespace facet {
+namespace {
+
+using namespace diffraction;
+using test::direction;
+using test::kPi;
+namespace k64 = kernels::f64;
+
+constexpr double kTolerance = 1e-3;
+
+// Coherence 8 um (twice the patch): orders narrow enough (~1/(k sigma) ~ 0.01 in u) for the
+// restriction to pay off.
+const char* kSinusoid =
+    R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":60,"size_um":4,"samples":64,"coherence_um":8})";
+const char* kRectangular =
+    R"({"type":"rectangular","period_nm":800,"amplitude_nm":40,"size_um":4,"samples":80,"coherence_um":8})";
+const char* kCrossed =
+    R"({"type":"crossed","period_nm":[1000,800],"amplitude_nm":60,"size_um":4,"samples":80,"coherence_um":8})";
+
+struct Case {
+  Grating grating;
+  SpectralTables tables;
+  OrderWavelengths plan;
+};
+
+Case make_case(const char* json) {
+  Case c{test::grating(json), {}, {}};
+  TableRange range;
+  range.lambda_min_nm = kCieLambdaMinNm;
+  range.lambda_max_nm = kCieLambdaMaxNm;
+  c.tables = build_spectral_tables(c.grating, range);
+  c.plan = plan_order_wavelengths(c.grating, c.tables, kTolerance, Illuminant::D65,
+                                  diffraction_wavelength_samples(c.tables, kTolerance));
+  return c;
+}
+
+glm::dvec3 spectral(const Case& c, const WavelengthSamples& s, const glm::dvec3& wi, const glm::dvec3& wr) {
+  return integrate_linear_srgb(s, [&](double l) { return evaluate_taylor(c.tables, {wi, wr, l}).brdf; });
+}
+
+TEST(Orders, PatchRepeatsAreTheGratingsPeriods) {
+  auto repeats = [](const char* json) { return patch_repeats(test::grating(json)); };
+  EXPECT_EQ(repeats(kSinusoid).x, 4);
+  EXPECT_EQ(repeats(kSinusoid).y, 64);  // constant along y
+  EXPECT_EQ(repeats(kRectangular).x, 5);
+  EXPECT_EQ(repeats(kCrossed).x, 4);
+  EXPECT_EQ(repeats(kCrossed).y, 5);
+  // Fingers: ridges of period 1000 nm along x, rows shifted every 1000 nm along y (period 2000 nm).
+  const auto fingers = repeats(R"({"type":"fingers","period_nm":1000,"amplitude_nm":80,"size_um":4,"samples":64,)"
+                               R"("finger_length_nm":1000})");
+  EXPECT_EQ(fingers.x, 4);
+  EXPECT_EQ(fingers.y, 2);
+}
+
+// Sum over the orders within the reach's radius of k (u, v) (those whose intervals can hold the
+// wavelength) of their shares is 1 (F.8), for any (u, v) and wavelength.
+TEST(Orders, SharesAreAPartitionOfUnity) {
+  const Case c = make_case(kCrossed);
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> uv(-1.5, 1.5), lambda(360.0, 830.0);
+  for (int q = 0; q < 200; ++q) {
+    const glm::dvec2 p(uv(rng), uv(rng));
+    const double l = lambda(rng);
+    const glm::dvec2 position = 2 * kPi / l * p / c.plan.lattice.frequency;
+    const glm::ivec2 nearest = glm::ivec2(glm::floor(position + 0.5));
+    const glm::ivec2 radius = glm::ivec2(glm::floor(c.plan.lattice.reach / c.plan.lattice.frequency + 0.5));
+    double total = 0.0;
+    for (int dy = -radius.y; dy <= radius.y; ++dy)
+      for (int dx = -radius.x; dx <= radius.x; ++dx)
+        total += k64::diffraction_order_share(c.plan.lattice, p, l, nearest + glm::ivec2(dx, dy));
+    EXPECT_NEAR(total, 1.0, 1e-12) << q;
+  }
+}
+
+// Every wavelength at which order j's window weight reaches the tolerance lies in j's interval
+// (and j in the span), found by a 0.02 nm scan over 360..830 nm; every node of the interval does.
+TEST(Orders, IntervalsHoldEveryReachingWavelength) {
+  const Case c = make_case(kCrossed);
+  const k64::DiffractionOrderLattice& L = c.plan.lattice;
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> uv(-1.2, 1.2);
+  for (int q = 0; q < 40; ++q) {
+    const glm::dvec2 p(uv(rng), uv(rng));
+    const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, p);
+    for (int jy = span.lo.y - 2; jy <= span.hi.y + 2; ++jy)
+      for (int jx = span.lo.x - 2; jx <= span.hi.x + 2; ++jx) {
+        const glm::ivec2 j(jx, jy);
+        const bool in_span = jx >= span.lo.x && jx <= span.hi.x && jy >= span.lo.y && jy <= span.hi.y;
+        const k64::DiffractionOrderInterval I = k64::diffraction_order_interval(L, p, j);
+        const double hi = I.lambda_lo + I.nodes * I.step;
+        auto reaches = [&](double l) { return glm::length(2 * kPi / l * p - glm::dvec2(j) * L.frequency) <= L.reach; };
+        for (double l = kCieLambdaMinNm; l <= kCieLambdaMaxNm; l += 0.02)
+          if (reaches(l)) {
+            EXPECT_TRUE(in_span) << q << " j " << jx << "," << jy;
+            EXPECT_TRUE(I.nodes > 0 && l >= I.lambda_lo - 1e-9 && l <= hi + 1e-9) << q << " j " << jx << "," << jy << " " << l;
+          }
+        for (int i = 0; i < I.nodes; ++i) EXPECT_TRUE(reaches(k64::diffraction_order_lambda(I, i))) << q;
+      }
+  }
+}
+
+// Directions that put (u, v) on order m of the x period at a random wavelength, slightly off it in
+// v, or anywhere: the colours the orders path gives and the per-wavelength path at 0.25 nm agree
+// within the tolerance's budget (window truncation + midpoint rule, 2 tol of the largest channel)
+// plus the observer table's linear interpolation (1e-4 of the query's largest channel), plus the
+// tails beyond the intervals (tol^2 of the brightest query).
+TEST(Orders, ColoursMatchTheSpectralPath) {
+  for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
+    const Case c = make_case(json);
+    ASSERT_TRUE(c.plan.periodic) << json;
+    const WavelengthSamples dense = wavelength_samples(0.25);
+    const double period_x = 2 * kPi / c.plan.lattice.frequency.x;
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst = 0.0, peak = 0.0;
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> results;  // (orders, spectral)
+    for (int q = 0; q < 60; ++q) {
+      const glm::dvec3 wi = direction(0.6 * unit(rng) - 0.3, 0.2 * unit(rng) - 0.1);
+      glm::dvec2 uv(2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0);
+      if (q % 3 != 2) uv = glm::dvec2((q % 2 ? 1 : -1) * (400.0 + 300.0 * unit(rng)) / period_x, 0.002 * (unit(rng) - 0.5));
+      const glm::dvec2 r = -uv - glm::dvec2(wi);
+      if (glm::dot(r, r) >= 1.0) continue;
+      const glm::dvec3 wr = direction(r.x, r.y);
+      results.emplace_back(evaluate_orders(c.tables, c.plan, wi, wr), spectral(c, dense, wi, wr));
+      peak = std::max(peak, glm::length(results.back().second));
+    }
+    // Outside every interval the windows are below tol, so the BRDF is below tol^2 of a peak.
+    for (const auto& [got, want] : results) {
+      const double scale = std::max({std::abs(want.x), std::abs(want.y), std::abs(want.z)});
+      for (int ch = 0; ch < 3; ++ch) {
+        EXPECT_LE(std::abs(got[ch] - want[ch]), (2 * kTolerance + 1e-4) * scale + kTolerance * kTolerance * peak) << json;
+        if (scale > 1e-3 * peak) worst = std::max(worst, std::abs(got[ch] - want[ch]) / scale);
+      }
+    }
+    std::printf("%s: worst |orders - spectral| / brightest channel (queries above 1e-3 of the peak) = %.3g\n", json, worst);
+  }
+}
+
+// Scanning the view across the first order (u from 0.3 to 0.8 in steps of 1e-3 at v = 0): the
+// brightest Y of each channel's peak is found at the same step by both paths.
+TEST(Orders, PeaksSitWhereTheSpectralPathPutsThem) {
+  for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
+    const Case c = make_case(json);
+    const glm::dvec3 wi = direction(0.0, 0.0);
+    int argmax_orders = -1, argmax_spectral = -1;
+    double max_orders = -1.0, max_spectral = -1.0;
+    for (int i = 0; i <= 500; ++i) {
+      const glm::dvec3 wr = direction(-(0.3 + 1e-3 * i), 0.0);
+      const double a = evaluate_orders(c.tables, c.plan, wi, wr).g, b = spectral(c, c.plan.fallback, wi, wr).g;
+      if (a > max_orders) max_orders = a, argmax_orders = i;
+      if (b > max_spectral) max_spectral = b, argmax_spectral = i;
+    }
+    EXPECT_EQ(argmax_orders, argmax_spectral) << json;
+    EXPECT_NEAR(max_orders, max_spectral, 3 * kTolerance * max_spectral) << json;
+  }
+}
+
+// The work the restriction saves: BRDF evaluations per pixel (nodes of all intervals) against the
+// spectral path's wavelength count at the same tolerance, averaged over the upper hemisphere of
+// views under a light at 30 degrees. Deterministic (no timing).
+TEST(Orders, EvaluatesFarFewerWavelengthsThanTheSpectralPath) {
+  for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
+    const Case c = make_case(json);
+    const glm::dvec3 wi = direction(0.5, 0.0);
+    double nodes = 0.0;
+    int pixels = 0;
+    for (int i = -20; i <= 20; ++i)
+      for (int j = -20; j <= 20; ++j) {
+        const glm::dvec2 r(i / 21.0, j / 21.0);
+        if (glm::dot(r, r) >= 1.0) continue;
+        const glm::dvec2 uv = -r - glm::dvec2(wi);
+        const k64::DiffractionOrderSpan span = k64::diffraction_order_span(c.plan.lattice, uv);
+        for (int jy = span.lo.y; jy <= span.hi.y; ++jy)
+          for (int jx = span.lo.x; jx <= span.hi.x; ++jx)
+            nodes += k64::diffraction_order_interval(c.plan.lattice, uv, glm::ivec2(jx, jy)).nodes;
+        ++pixels;
+      }
+    const double per_pixel = nodes / pixels, spectral_count = static_cast<double>(c.plan.fallback.lambda_nm.size());
+    std::printf("%s: %.1f evaluations per pixel against %.0f wavelengths\n", json, per_pixel, spectral_count);
+    EXPECT_LT(per_pixel * 3.0, spectral_count) << json;
+  }
+}
+
+// A random height field has no period inside its patch: the plan says so and evaluate_orders is
+// exactly the spectral path on the fallback samples.
+TEST(Orders, RandomHeightFieldFallsBackToSpectral) {
+  Grating g = test::grating(kSinusoid);
+  std::mt19937 rng(9);
+  std::normal_distribution<double> height(0.0, 30.0);
+  for (double& h : g.height_nm) h = height(rng);
+  TableRange range;
+  range.lambda_min_nm = kCieLambdaMinNm;
+  const SpectralTables tables = build_spectral_tables(g, range);
+  const OrderWavelengths plan =
+      plan_order_wavelengths(g, tables, kTolerance, Illuminant::D65, diffraction_wavelength_samples(tables, kTolerance));
+  EXPECT_EQ(patch_repeats(g).x, 1);
+  EXPECT_EQ(patch_repeats(g).y, 1);
+  EXPECT_FALSE(plan.periodic);
+  EXPECT_GT(plan.worst_orders, kMaxOrdersPerPixel);
+  const glm::dvec3 wi = direction(0.2, 0.1);
+  for (double x : {-0.5, -0.2, 0.1}) {
+    const glm::dvec3 wr = direction(x, 0.05);
+    const glm::dvec3 want =
+        integrate_linear_srgb(plan.fallback, [&](double l) { return evaluate_taylor(tables, {wi, wr, l}).brdf; });
+    EXPECT_EQ(evaluate_orders(tables, plan, wi, wr), want);
+  }
+}
+
+// The GPU (float, lavapipe) runs render/diffraction_orders.glsl: on views across the orders of
+// each grating it agrees with the double twin within 1e-4 of the query's brightest channel (the
+// float Taylor BRDF's own error, docs/diffraction.md, plus float node positions) and tol^2 of the
+// brightest query.
+TEST(Orders, GpuMatchesTheDoubleTwin) {
+  auto context = test::make_validated_context();
+  for (const char* json : {kSinusoid, kCrossed}) {
+    const Case c = make_case(json);
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> pairs;
+    const glm::dvec3 wi = direction(0.2, 0.05);
+    while (pairs.size() < 256) {
+      const glm::dvec2 uv((400.0 + 300.0 * unit(rng)) / 1000.0, 0.002 * (unit(rng) - 0.5));
+      const glm::dvec2 r = -uv - glm::dvec2(wi);
+      if (glm::dot(r, r) < 1.0) pairs.emplace_back(wi, direction(r.x, r.y));
+    }
+    const test::OrdersProbeRun run = test::run_orders_probe(*context, c.tables, c.plan, pairs);
+    std::vector<glm::dvec3> want;
+    double peak = 0.0, worst = 0.0;
+    for (const auto& [a, b] : pairs) {
+      want.push_back(evaluate_orders(c.tables, c.plan, a, b));
+      peak = std::max(peak, glm::length(want.back()));
+    }
+    for (size_t q = 0; q < pairs.size(); ++q) {
+      const double scale = std::max({std::abs(want[q].x), std::abs(want[q].y), std::abs(want[q].z)});
+      for (int ch = 0; ch < 3; ++ch) {
+        const double error = std::abs(run.rgb[q][ch] - want[q][ch]);
+        EXPECT_LE(error, 1e-4 * scale + kTolerance * kTolerance * peak) << json << " " << q;
+        if (scale > 1e-3 * peak) worst = std::max(worst, error / scale);
+      }
+    }
+    std::printf("GPU vs double twin, %s: worst |error| / brightest channel = %.3g\n", json, worst);
+  }
+}
+
+// Grazing and extreme directions give finite colours.
+TEST(Orders, FiniteOnTheWholeDomain) {
+  const Case c = make_case(kCrossed);
+  for (double ix : {-1.0, 0.0, 0.7})
+    for (double rx : {-1.0, -0.3, 0.0, 1.0})
+      for (double ry : {-1.0, 0.0, 1e-12}) {
+        const glm::dvec3 wr = glm::normalize(glm::dvec3(rx, ry, std::sqrt(std::max(0.0, 1 - rx * rx - ry * ry))));
+        const glm::dvec3 rgb = evaluate_orders(c.tables, c.plan, direction(ix, 0.0), wr);
+        for (int ch = 0; ch < 3; ++ch) EXPECT_TRUE(std::isfinite(rgb[ch])) << ix << " " << rx << " " << ry;
+      }
+}
+
+}  // namespace
+}  // namespace facet

@@ -1,0 +1,118 @@
+// The diffraction fast paths in the render pass (issue 11): `preintegrated` and `orders` against
+// `spectral` on the same scene (scenes/diffraction_plate.json at 48 x 48, GPU), the CLI flags and
+// their EXR metadata, and tables too large for the device refused with one line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <variant>
+
+#include "common/error.hpp"
+#include "gpu/diffraction_fast_upload.hpp"
+#include "gpu/direct_pass.hpp"
+#include "image/exr_io.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/run_command.hpp"
+#include "support/vulkan_fixture.hpp"
+
+namespace facet {
+namespace {
+
+constexpr int kSize = 48;
+const std::filesystem::path kPlate = std::filesystem::path(FACET_SOURCE_DIR) / "scenes/diffraction_plate.json";
+
+Image render(vk::Context& context, const Scene& scene, diffraction::DiffractionMethod method) {
+  gpu::RenderMethod m;
+  m.diffraction.method = method;
+  return gpu::render_direct(context, scene, kSize, kSize, m);
+}
+
+struct Difference {
+  double max_abs = 0.0;
+  double peak = 0.0;  // largest channel of `reference`
+};
+
+Difference difference(const Image& image, const Image& reference) {
+  Difference d;
+  for (size_t i = 0; i < image.pixel_count(); ++i) {
+    const glm::vec3 a = image.at(i), b = reference.at(i);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_TRUE(std::isfinite(a[c]));
+      d.max_abs = std::max(d.max_abs, static_cast<double>(std::abs(a[c] - b[c])));
+      d.peak = std::max(d.peak, static_cast<double>(std::abs(b[c])));
+    }
+  }
+  return d;
+}
+
+TEST(DiffractionFastPathsRender, AgreeWithTheSpectralPath) {
+  auto context = test::make_validated_context();
+  const Scene scene = load_scene(kPlate);
+  const Image spectral = render(*context, scene, diffraction::DiffractionMethod::Spectral);
+  const Difference pre = difference(render(*context, scene, diffraction::DiffractionMethod::Preintegrated), spectral);
+  const Difference orders = difference(render(*context, scene, diffraction::DiffractionMethod::Orders), spectral);
+  std::cout << "peak " << pre.peak << ", preintegrated max |diff| " << pre.max_abs << " (" << pre.max_abs / pre.peak
+            << " of the peak), orders " << orders.max_abs << " (" << orders.max_abs / orders.peak << ")\n";
+  ASSERT_GT(pre.peak, 0.05);  // the plate shows its orders
+  // F.6: interpolation <= tol E (2 tol E with the stated approximations), storage 2^-11 E; the
+  // envelope E of this sinusoid's few orders is taken as the brightest colour (its sum of moduli
+  // is within a few per cent of it where one order dominates), doubled for the float GPU path.
+  EXPECT_LE(pre.max_abs, 2.0 * (2.0 * gpu::kPreintegrationTolerance + std::ldexp(1.0, -11)) * pre.peak);
+  // orders: window truncation and midpoint rule at the material's tolerance 1e-3 measured at
+  // <= 0.1 % of the brightest channel (docs/diffraction_fast_paths.md); 10x margin for the
+  // float pass and the pixel's colour pipeline.
+  EXPECT_LE(orders.max_abs, 1e-2 * orders.peak);
+}
+
+TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine) {
+  const Scene scene = load_scene(kPlate);
+  const auto prepared = diffraction::prepare_diffraction(std::get<DiffractionMaterial>(scene.materials[0]));
+  gpu::FastPathData data;
+  diffraction::GpuDiffractionMaterial entry{};
+  try {
+    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096);
+    FAIL() << "4 KiB of tables accepted";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find("grating"), std::string::npos) << message;  // names the material
+    EXPECT_NE(message.find("MiB"), std::string::npos) << message;
+  }
+  EXPECT_TRUE(data.preintegrated_words.empty());
+}
+
+TEST(DiffractionFastPathsRender, MethodStringsRoundTrip) {
+  for (const char* name : {"diffraction:spectral", "diffraction:preintegrated", "diffraction:orders"})
+    EXPECT_EQ(gpu::RenderMethod::parse(name).name(), name);
+  EXPECT_EQ(gpu::RenderMethod::parse("diffraction:orders").diffraction.method, diffraction::DiffractionMethod::Orders);
+  EXPECT_FALSE(gpu::RenderMethod::parse("naive").diffraction.method);
+  EXPECT_EQ(gpu::RenderMethod::parse("ss:2").name(), "ss:2");
+  EXPECT_THROW(gpu::RenderMethod::parse("diffraction:fourier"), Error);
+  EXPECT_THROW(gpu::RenderMethod::parse("diffraction:"), Error);
+}
+
+TEST(DiffractionFastPathsRender, CliFlagsPickTheMethodAndGoIntoTheMetadata) {
+  const std::string facet = FACET_EXECUTABLE;
+  const std::filesystem::path out = std::filesystem::path(FACET_BINARY_DIR) / "render_fast_paths_test.exr";
+  auto r = test::run_command(facet + " render " + kPlate.string() + " --width 16 --height 16 --diffraction orders " +
+                             "--wavelengths 24 --taylor 6 -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ExrMetadata metadata;
+  read_exr(out, &metadata);
+  EXPECT_EQ(std::get<std::string>(metadata.at("facet:diffraction_method")), "orders");
+  EXPECT_EQ(std::get<std::int64_t>(metadata.at("facet:wavelengths")), 24);
+  EXPECT_EQ(std::get<std::int64_t>(metadata.at("facet:taylor_terms")), 6);
+  std::filesystem::remove(out);
+
+  r = test::run_command(facet + " render " + kPlate.string() + " --width 16 --height 16 --diffraction fourier -o " +
+                        out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.err.rfind("facet: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace facet

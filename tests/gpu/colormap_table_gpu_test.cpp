@@ -1,0 +1,176 @@
+// `filtered:table` on the GPU: colormap_gaussian of the direct pass (probed by
+// tests/gpu/shaders/colormap_gaussian_probe.comp over the buffers upload_scene builds) against the
+// CPU lookup of the same prefiltered table and against the exact filter, for a step map (the noise
+// plane's) and a linear map with a shifted domain.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <variant>
+
+#include <gtest/gtest.h>
+
+#include "colormap_gaussian_probe.spv.h"
+#include "gpu/scene_upload.hpp"
+#include "gpu/texture_upload.hpp"
+#include "precompute/colormap_filter.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/vulkan_fixture.hpp"
+#include "vk/kernel.hpp"
+
+namespace facet {
+namespace {
+
+using gpu::vec4;
+
+// The noise plane's step map plus a linear map with a shifted domain on the same texture. (A
+// 256-point built-in map is tested the same way but its table takes seconds to build:
+// docs/colormap_filtering.md.)
+Scene two_map_scene() {
+  Scene scene = load_scene(std::string(FACET_SOURCE_DIR) + "/scenes/colormap_noise_plane.json");
+  const ScalarTexture texture = std::get<ColormapTextureMaterial>(scene.materials.at(0)).texture;
+  scene.materials.push_back(ColormapTextureMaterial{
+      texture, Colormap({0.0, 0.2, 0.7, 1.0}, {{0.9, 0.2, 0.05}, {0.1, 0.6, 0.8}, {0.3, 0.3, 0.0}, {1.0, 1.0, 1.0}},
+                        Colormap::Interpolation::Linear, {0.2, 0.8})});
+  scene.material_names.push_back("shifted");
+  return scene;
+}
+
+// colormap_gaussian on the GPU for probes (mu, sigma, map index, -) by method 3 (filtered) or 4
+// (filtered:table), over the buffers of one upload_scene (with tables unless told otherwise).
+class GaussianProbe {
+ public:
+  GaussianProbe(vk::Context& context, const Scene& scene, bool tables = true)
+      : context_(&context), buffers_(gpu::upload_scene(context, scene, tables)), pixels_(context, sizeof(vec4)) {}
+
+  std::vector<vec4> run(std::vector<vec4> probes, uint32_t method) {
+    vk::Buffer records = vk::Buffer::from(*context_, std::span<const vec4>(probes));
+    std::vector<const vk::Buffer*> bindings = buffers_.bindings(pixels_);
+    bindings.push_back(&records);
+    vk::Kernel kernel(*context_, {.name = "colormap_gaussian_probe",
+                                  .spirv = colormap_gaussian_probe_spv,
+                                  .buffer_count = static_cast<uint32_t>(bindings.size()),
+                                  .push_constant_bytes = sizeof(gpu::GpuTile),
+                                  .image_count = 0,
+                                  .specialization = {{2, method}}});
+    const gpu::GpuTile tile{};
+    kernel.dispatch(bindings, &tile, {static_cast<uint32_t>((probes.size() + 63) / 64), 1, 1});
+    records.download(probes.data(), probes.size() * sizeof(vec4));
+    return probes;
+  }
+
+ private:
+  vk::Context* context_;
+  gpu::SceneBuffers buffers_;
+  vk::Buffer pixels_;
+};
+
+double max_channel(glm::dvec3 d) { return std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}); }
+
+// The GPU table against the double lookup of the same table (float bound below) and against the exact
+// filter (the table's tolerance plus that bound); below a step map's sigma floor, the exact filter
+// itself; extreme inputs finite and within the colours.
+TEST(ColormapTableGpu, GpuLookupMatchesTheCpuTableAndTheExactFilter) {
+  auto context = test::make_validated_context();
+  const Scene scene = two_map_scene();
+  std::vector<precompute::PrefilteredColormap> tables;
+  std::vector<vec4> probes;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    const auto start = std::chrono::steady_clock::now();
+    tables.push_back(gpu::build_colormap_table(std::get<ColormapTextureMaterial>(scene.materials[m])));
+    const auto& g = tables.back().grid;
+    std::printf("table %zu: %dx%d, measured %.2e, built in %.0f ms\n", m, g.mu_count, g.sigma_count,
+                tables.back().measured_max_error,
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    // mu over the grid and 10% beyond, sigma over [0, sigma_max] (dense at small sigma).
+    for (int k = 0; k < 4000; ++k) {
+      const double u = unit(rng), s = unit(rng);
+      probes.emplace_back(g.mu_min + (g.mu_max - g.mu_min) * (1.2 * u - 0.1), g.sigma_max * s * s, m, 0);
+    }
+  }
+  // Extreme and non-finite moments, checked below for finite colours within the map.
+  const float inf = INFINITY, nan = NAN;
+  const size_t regular = probes.size();
+  for (float m = 0; m < 2; ++m)
+    for (float mu : {-1e30f, -5.0f, 0.5f, 5.0f, 1e30f, inf, -inf, nan})
+      for (float sigma : {0.0f, 1e-30f, 0.3f, 10.0f, 1e30f, inf, nan}) probes.emplace_back(mu, sigma, m, 0);
+  GaussianProbe probe(*context, scene);
+  const std::vector<vec4> table = probe.run(probes, 4);
+  const std::vector<vec4> exact = probe.run(probes, 3);
+  for (size_t i = regular; i < probes.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_TRUE(std::isfinite(table[i][k])) << probes[i].x << " " << probes[i].y;
+      EXPECT_GE(table[i][k], 0.0f);
+      EXPECT_LE(table[i][k], 1.0f + 1e-5f);
+    }
+  probes.resize(regular);
+  const double eps_f = std::ldexp(1.0, -24);
+  double worst_vs_cpu_table = 0, worst_vs_exact = 0, worst_exact_gpu = 0;
+  for (size_t i = 0; i < probes.size(); ++i) {
+    const size_t m = static_cast<size_t>(probes[i].z);
+    const auto& material = std::get<ColormapTextureMaterial>(scene.materials[m]);
+    const precompute::PrefilteredColormap& t = tables[m];
+    const float mu = probes[i].x, sigma = probes[i].y;
+    // The exact GPU loop (knots shared, points beyond 8 sigma skipped) against the double CPU sum:
+    // the float kernels' accuracy, 2e-5 (docs/colormap_filtering.md: float twin vs double).
+    const double exact_error =
+        max_channel(glm::dvec3(exact[i]) - precompute::filtered_colormap_exact(material.colormap, mu, sigma));
+    worst_exact_gpu = std::max(worst_exact_gpu, exact_error);
+    ASSERT_LE(exact_error, 2e-5) << "map " << m << " mu " << mu << " sigma " << sigma;
+    if (sigma < gpu::colormap_table_sigma_floor(material.colormap)) {
+      // Below a step map's sigma floor filtered:table is the exact filter itself.
+      EXPECT_EQ(table[i], exact[i]) << i;
+      continue;
+    }
+    // Float lookup against the double lookup: the cell coordinate u (I - 1) carries ~2 eps_f (I - 1)
+    // of rounding (in cells), times the largest node-to-node step (<= 1 here: colours in [0, 1] but
+    // the step is far smaller; bound it by the map's colour spread 1), plus ~4 eps_f of blending.
+    double step = 0;
+    for (int j = 0; j < t.grid.sigma_count; ++j)
+      for (int k = 0; k + 1 < t.grid.mu_count; ++k)
+        step = std::max(step, max_channel(t.values[j * t.grid.mu_count + k + 1] - t.values[j * t.grid.mu_count + k]));
+    const double float_bound = 2 * eps_f * (t.grid.mu_count - 1) * step + 8 * eps_f;
+    const glm::dvec3 got(table[i]);
+    const double vs_table = max_channel(got - t.lookup(mu, sigma));
+    const double vs_exact = max_channel(got - precompute::filtered_colormap_exact(material.colormap, mu, sigma));
+    worst_vs_cpu_table = std::max(worst_vs_cpu_table, vs_table / float_bound);
+    worst_vs_exact = std::max(worst_vs_exact, vs_exact);
+    ASSERT_LE(vs_table, float_bound) << "map " << m << " mu " << mu << " sigma " << sigma;
+    ASSERT_LE(vs_exact, gpu::kColormapTableTolerance + float_bound) << "map " << m << " mu " << mu << " sigma " << sigma;
+  }
+  std::printf("GPU table vs CPU table: worst %.3f of the float bound; vs exact filter: %.2e (tolerance %.1e); "
+              "GPU exact vs CPU exact: %.2e\n",
+              worst_vs_cpu_table, worst_vs_exact, gpu::kColormapTableTolerance, worst_exact_gpu);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+// The exact GPU loop on a 256-point map (viridis, domain [-1, 2]), where it visits only the points
+// within 8 sigma of mu (binary searches): against the double CPU sum over all points, 2e-5.
+TEST(ColormapTableGpu, ExactFilterOfALongMapMatchesTheCpu) {
+  auto context = test::make_validated_context();
+  Scene scene = load_scene(std::string(FACET_SOURCE_DIR) + "/scenes/colormap_noise_plane.json");
+  const Colormap map = builtin_colormap("viridis", Colormap::Interpolation::Linear, {-1.0, 2.0});
+  scene.materials.at(0) = ColormapTextureMaterial{std::get<ColormapTextureMaterial>(scene.materials[0]).texture, map};
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<vec4> probes;
+  for (int k = 0; k < 20000; ++k) {
+    const double s = unit(rng);
+    probes.emplace_back(-1.5 + 4.0 * unit(rng), 2.0 * std::pow(s, 4), 0, 0);  // sigma from 1e-8 to 2
+  }
+  const std::vector<vec4> gpu = GaussianProbe(*context, scene, false).run(probes, 3);
+  double worst = 0;
+  for (size_t i = 0; i < probes.size(); ++i) {
+    const double error = max_channel(glm::dvec3(gpu[i]) - precompute::filtered_colormap_exact(map, probes[i].x, probes[i].y));
+    worst = std::max(worst, error);
+    ASSERT_LE(error, 2e-5) << "mu " << probes[i].x << " sigma " << probes[i].y;
+  }
+  std::printf("viridis, GPU exact vs CPU exact: worst %.2e\n", worst);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+}  // namespace
+}  // namespace facet

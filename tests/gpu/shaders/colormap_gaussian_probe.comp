@@ -1,0 +1,20 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Test probe of render/texture_sampling.glsl: colormap_gaussian(map, mu, sigma) of the direct pass,
+// with the scene's buffers at bindings 0-10, for records (mu, sigma, colour map index, -) at binding
+// 11, each replaced by (rgb, -). Specialization constant 2 selects filtered (3) or filtered:table (4).
+
+layout(local_size_x = 64) in;
+layout(constant_id = 2) const uint kTextureMethod = 4u;
+
+#include "render/scene_bindings.glsl"
+#include "render/texture_sampling.glsl"
+
+layout(std430, binding = 11) buffer Probes { vec4 probes[]; };
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= uint(probes.length())) return;
+  vec4 q = probes[i];
+  probes[i] = vec4(colormap_gaussian(colormaps[uint(q.z)], q.x, q.y), 0.0);
+}

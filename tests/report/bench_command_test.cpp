@@ -1,0 +1,183 @@
+// `facet bench` end to end on a tiny textured scene: the files it writes, the results.json schema,
+// a failing method next to working ones, and the reference cache (hit, invalidation, corruption).
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "image/temp_dir.hpp"
+#include "support/run_command.hpp"
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kFacet = FACET_EXECUTABLE;
+
+// colormap_noise_plane at 48x27: small enough for a test, textured so every method applies.
+const std::string kScene = R"({
+  "camera": {"position": [0, 1, 0], "target": [0, 0, -1], "up": [0, 1, 0], "fov_y": 88, "width": 48, "height": 27},
+  "light": {"direction": [0.3, 1.0, 0.4], "irradiance": [3.0, 3.0, 3.0]},
+  "ambient": [AMBIENT, 0.3, 0.3],
+  "background": [0.55, 0.65, 0.8],
+  "materials": {
+    "bands": {"type": "colormap_texture",
+              "texture": {"noise": {"width": 64, "height": 64, "octaves": 3, "base_frequency": 4, "seed": 11}},
+              "colormap": {"points": [[0.0, [0.05, 0.1, 0.45]], [0.45, [0.95, 0.95, 0.9]], [0.55, [0.8, 0.25, 0.05]]],
+                           "interpolation": "steps", "encoding": "srgb"}}
+  },
+  "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "uv_scale": [2, 2], "material": "bands"}]
+})";
+
+class Bench : public ::testing::Test {
+ protected:
+  fs::path write_scene(const std::string& ambient = "0.3") {
+    std::string text = kScene;
+    text.replace(text.find("AMBIENT"), 7, ambient);
+    std::ofstream(dir_ / "tiny.json") << text;
+    return dir_ / "tiny.json";
+  }
+  test::CommandResult bench(const std::string& arguments) {
+    return test::run_command(kFacet + " bench '" + (dir_ / "tiny.json").string() + "' --out '" +
+                             (dir_ / "out").string() + "' --quick --width 48 --grid 4 " + arguments);
+  }
+  json read_json(const std::string& name) { return json::parse(test::read_text(dir_ / "out" / name)); }
+  bool reference_cache_hit() { return read_json("run.json")["scenes"][0]["reference_cache_hit"].get<bool>(); }
+
+  test::TempDir dir_;
+};
+
+// The keys every successful record has, with their JSON types (issue #8 and docs/report.md).
+void expect_record_schema(const json& r, const fs::path& out) {
+  for (const char* key : {"scene", "scene_file", "method", "device", "machine", "facet_version", "time_source", "image",
+                          "heatmap"})
+    EXPECT_TRUE(r.contains(key) && r[key].is_string()) << key << " in " << r.dump();
+  for (const char* key : {"time_ms", "time_ms_min", "time_ms_max", "wall_ms", "wall_ms_min", "wall_ms_max", "rmse",
+                          "rel_mse", "max_abs", "ssim", "flip", "gpu_ms", "prepare_ms"})
+    EXPECT_TRUE(r.contains(key) && r[key].is_number()) << key << " in " << r.dump();
+  for (const char* key : {"width", "height", "repeats"})
+    EXPECT_TRUE(r.contains(key) && r[key].is_number_integer()) << key;
+  EXPECT_TRUE(r.contains("psnr") && (r["psnr"].is_number() || r["psnr"].is_null()));
+  EXPECT_FALSE(r.contains("error"));
+  EXPECT_EQ(r["width"], 48);
+  EXPECT_EQ(r["height"], 27);
+  EXPECT_EQ(r["repeats"], 2);
+  EXPECT_EQ(r["time_source"], "gpu");  // lavapipe has timestamps
+  EXPECT_LE(r["time_ms_min"].get<double>(), r["time_ms"].get<double>());
+  EXPECT_LE(r["time_ms"].get<double>(), r["time_ms_max"].get<double>());
+  EXPECT_GE(r["rmse"].get<double>(), 0.0);
+  EXPECT_GE(r["ssim"].get<double>(), -1.0);
+  EXPECT_LE(r["ssim"].get<double>(), 1.0);
+  EXPECT_TRUE(fs::is_regular_file(out / r["image"].get<std::string>())) << r["image"];
+  EXPECT_TRUE(fs::is_regular_file(out / r["heatmap"].get<std::string>())) << r["heatmap"];
+}
+
+TEST_F(Bench, QuickRunWritesAValidReport) {
+  write_scene();
+  const auto r = bench("");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path out = dir_ / "out";
+  const json results = read_json("results.json");
+  ASSERT_TRUE(results.is_array());
+  std::set<std::string> methods;
+  for (const json& record : results) {
+    expect_record_schema(record, out);
+    methods.insert(record["method"].get<std::string>());
+  }
+  EXPECT_EQ(methods, (std::set<std::string>{"naive", "mip", "colormip", "filtered", "filtered:table", "ss:1", "ss:2",
+                                            "ss:4", "ss:8"}));
+  // More rays per pixel must get closer to the reference on this aliasing-prone texture.
+  double rmse_ss1 = 0, rmse_ss8 = 0;
+  for (const json& record : results) {
+    if (record["method"] == "ss:1") rmse_ss1 = record["rmse"];
+    if (record["method"] == "ss:8") rmse_ss8 = record["rmse"];
+  }
+  EXPECT_LT(rmse_ss8, rmse_ss1);
+
+  const json run = read_json("run.json");
+  EXPECT_FALSE(run["device"].get<std::string>().empty());
+  EXPECT_EQ(run["exit_status"], 0);
+  EXPECT_FALSE(run["scenes"][0]["reference_cache_hit"].get<bool>());
+  EXPECT_TRUE(fs::is_regular_file(out / run["scenes"][0]["reference_image"].get<std::string>()));
+  const fs::path plot = out / run["scenes"][0]["plot"].get<std::string>();
+  ASSERT_TRUE(fs::is_regular_file(plot));
+  EXPECT_NE(test::read_text(plot).find("<circle class=\"point"), std::string::npos);
+  // The stability table: every kernel row measured, every number finite.
+  ASSERT_GE(run["kernel_stability"].size(), 4u);
+  for (const json& row : run["kernel_stability"]) {
+    EXPECT_TRUE(row["f32"].is_number()) << row.dump();
+    for (const char* key : {"f64", "f32", "gpu"}) {
+      if (!row[key].is_null()) {
+        EXPECT_TRUE(std::isfinite(row[key].get<double>())) << row.dump();
+      }
+    }
+  }
+  const std::string md = test::read_text(out / "report.md");
+  EXPECT_NE(md.find("| filtered |"), std::string::npos);
+  EXPECT_NE(md.find("Headline"), std::string::npos);
+  EXPECT_NE(md.find("Numerical stability"), std::string::npos);
+  const std::string html = test::read_text(out / "index.html");
+  EXPECT_NE(html.find("tiny/speed_error.svg"), std::string::npos);
+  EXPECT_NE(html.find("tiny/filtered.flip.png"), std::string::npos);
+}
+
+TEST_F(Bench, AFailingMethodIsReportedAndTheOthersStillRun) {
+  write_scene();
+  const auto r = bench("--no-stability --methods naive,ss:99,ss:2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json results = read_json("results.json");
+  ASSERT_EQ(results.size(), 3u);
+  EXPECT_EQ(results[0]["method"], "naive");
+  EXPECT_TRUE(results[0]["rmse"].is_number());
+  EXPECT_EQ(results[1]["method"], "ss:99");
+  ASSERT_TRUE(results[1].contains("error"));
+  EXPECT_NE(results[1]["error"].get<std::string>().find("ss:99"), std::string::npos);
+  EXPECT_FALSE(results[1].contains("time_ms"));
+  EXPECT_FALSE(results[1].contains("rmse"));
+  EXPECT_TRUE(results[2]["rmse"].is_number());
+  EXPECT_NE(test::read_text(dir_ / "out/report.md").find("| ss:99 | error:"), std::string::npos);
+}
+
+TEST_F(Bench, ReferenceCacheHitsUntilTheSceneChanges) {
+  write_scene();
+  ASSERT_EQ(bench("--no-stability --methods naive").exit_code, 0);
+  EXPECT_FALSE(reference_cache_hit());
+  const double rmse_first = read_json("results.json")[0]["rmse"];
+  ASSERT_EQ(bench("--no-stability --methods naive").exit_code, 0);
+  EXPECT_TRUE(reference_cache_hit());
+  EXPECT_EQ(read_json("results.json")[0]["rmse"].get<double>(), rmse_first);  // the same reference, as stored
+  write_scene("0.31");
+  ASSERT_EQ(bench("--no-stability --methods naive").exit_code, 0);
+  EXPECT_FALSE(reference_cache_hit());
+  // A corrupt cache file is recomputed, not trusted.
+  for (const auto& entry : fs::directory_iterator(dir_ / "out/cache")) std::ofstream(entry.path()) << "garbage";
+  const auto r = bench("--no-stability --methods naive");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(reference_cache_hit());
+  ASSERT_EQ(bench("--no-stability --methods naive").exit_code, 0);
+  EXPECT_TRUE(reference_cache_hit());
+}
+
+TEST_F(Bench, ABrokenSceneFailsTheRunButNotTheOtherScenes) {
+  write_scene();
+  std::ofstream(dir_ / "broken.json") << "{\"camera\": ";
+  const auto r = test::run_command(kFacet + " bench '" + (dir_ / "broken.json").string() + "' '" +
+                                   (dir_ / "tiny.json").string() + "' --out '" + (dir_ / "out").string() +
+                                   "' --quick --width 48 --grid 2 --no-stability --methods naive");
+  EXPECT_EQ(r.exit_code, 1);
+  const json results = read_json("results.json");
+  ASSERT_EQ(results.size(), 2u);
+  EXPECT_EQ(results[0]["scene"], "broken");
+  EXPECT_EQ(results[0]["method"], "reference");
+  EXPECT_TRUE(results[0].contains("error"));
+  EXPECT_EQ(results[1]["scene"], "tiny");
+  EXPECT_TRUE(results[1]["rmse"].is_number());
+}
+
+}  // namespace
+}  // namespace facet
