@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages facet builds and tests with, if any is missing.
+# Installs the Debian 12 packages facet builds and tests with, if any is missing, plus any
+# packages named as arguments.
 set -euo pipefail
 
 packages=(
@@ -10,8 +11,8 @@ packages=(
   libtbb-dev libcli11-dev libboost-dev libembree-dev libfftw3-dev
   libgtest-dev libbenchmark-dev
   openimageio-tools hyperfine
-  clang-16 libclang-rt-16-dev
 )
+packages+=("$@")  # extra packages a caller needs (tools/test_hardening.sh: clang-16)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 build=build-asan
 seconds=${FUZZ_SECONDS:-30}
 jobs=$(nproc)
-bash tools/install_deps.sh
+bash tools/install_deps.sh clang-16 libclang-rt-16-dev
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++-16 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DFACET_SANITIZE=address,undefined -DFACET_FUZZ=ON -DFACET_BUILD_BENCHMARKS=OFF
 cmake --build "$build" -j"$jobs"
