@@ -4,7 +4,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -20,6 +19,7 @@
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "common/progress.hpp"
 #include "scene/camera_path.hpp"
 #include "scene/scene_loader.hpp"
@@ -40,11 +40,6 @@ struct BatchCommandOptions {
   fs::path out_dir;
   DeviceOptions device;
 };
-
-// Set by SIGINT/SIGTERM: the batch stops after the current GPU frame (or abandons the current
-// reference frame between tiles), with every finished output in the manifest.
-std::atomic<bool> stop_requested{false};
-extern "C" void on_batch_signal(int) { stop_requested.store(true); }
 
 struct LoadedScene {
   std::optional<Scene> scene;
@@ -155,8 +150,9 @@ int run_batch(const BatchCommandOptions& options) {
   }
   batch::write_manifest(own_path, own);
 
-  std::signal(SIGINT, on_batch_signal);
-  std::signal(SIGTERM, on_batch_signal);
+  // Set by SIGINT/SIGTERM: the batch stops after the current GPU frame (or abandons the current
+  // reference frame between tiles), with every finished output in the manifest.
+  const std::atomic<bool>& stop_requested = stop_on_interrupt();
   SharedDevice device(options.device);
   ProgressBar progress("batch", static_cast<int64_t>(pending.size()));
   const bool interactive = ::isatty(STDERR_FILENO) != 0;

@@ -1,13 +1,13 @@
 // facet reference SCENE -o REF.exr: the CPU reference image (docs/reference.md), to EXR + PNG preview.
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
+#include "common/interrupt.hpp"
 #include "common/progress.hpp"
 #include "cpu/reference_renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -26,19 +26,11 @@ struct ReferenceCommandOptions {
   int threads = 0;
 };
 
-// Set by SIGINT/SIGTERM; the renderer polls it between rows and then throws, so no file is written.
-std::atomic<bool> interrupted{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
-
-extern "C" void on_interrupt(int) { interrupted.store(true); }
-
 int run_reference(const ReferenceCommandOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Scene scene = load_scene(options.scene);
   options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
 
   cpu::ReferenceOptions render;
   render.width = width;
@@ -46,7 +38,7 @@ int run_reference(const ReferenceCommandOptions& options) {
   render.grid = options.grid;
   render.seed = static_cast<std::uint64_t>(options.seed);
   render.threads = options.threads;
-  render.cancel = &interrupted;
+  render.cancel = &stop_on_interrupt();  // polled between rows, then throws: no file is written
   std::unique_ptr<ProgressBar> progress;
   render.progress = [&](std::int64_t done, std::int64_t total) {
     if (!progress) progress = std::make_unique<ProgressBar>("reference", total);

@@ -31,7 +31,16 @@ extern "C" void on_fatal_signal(int signal_number) {
   ::_exit(128 + signal_number);
 }
 
+std::atomic<bool> stop_requested{false};
+extern "C" void on_stop_signal(int) { stop_requested.store(true); }
+
 }  // namespace
+
+const std::atomic<bool>& stop_on_interrupt() {
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+  return stop_requested;
+}
 
 void install_interrupt_handlers() {
   std::signal(SIGINT, on_fatal_signal);
