@@ -21,6 +21,7 @@
 
 #include "batch/job.hpp"
 #include "image/exr_io.hpp"
+#include "image/temp_dir.hpp"
 #include "support/run_command.hpp"
 
 extern char** environ;
@@ -107,14 +108,10 @@ nlohmann::json manifest_items(const fs::path& file) {
 class Batch : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("facet_batch_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
     fs::create_directories(dir_ / "scenes");
     write("scenes/plane.json", plane_scene(4));
     write("scenes/ball.json", ball_scene("[0.1, 0.12, 0.15]"));
   }
-  void TearDown() override { fs::remove_all(dir_); }
   void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
   // A job over `scenes` and `methods` (JSON arrays), tiny frames, reference grid `grid`.
   fs::path job(const std::string& scenes, const std::string& methods, int grid = 2, const std::string& name = "job.json") {
@@ -126,7 +123,7 @@ class Batch : public ::testing::Test {
   test::CommandResult batch(const fs::path& job_file, const fs::path& out, const std::string& extra = "") {
     return run_command(kFacet + " batch " + job_file.string() + " --out-dir " + out.string() + " " + extra);
   }
-  fs::path dir_;
+  test::TempDir dir_;
 };
 
 const std::string kAllScenes = R"(["scenes/*.json"])";
@@ -326,7 +323,7 @@ TEST_F(Batch, RenderFrameDrawsTheBatchFrameAndJobErrorsAreOneLine) {
   EXPECT_EQ(std::count(collide.err.begin(), collide.err.end(), '\n'), 1) << collide.err;
   EXPECT_NE(collide.err.find("(add {frame})"), std::string::npos) << collide.err;
   write("job.manifest.json", "{oops");
-  const auto corrupt = batch(job_file, dir_);
+  const auto corrupt = batch(job_file, dir_.path());
   EXPECT_EQ(corrupt.err, "facet: error: " + (dir_ / "job.manifest.json").string() +
                              ": not a readable facet manifest (delete it to render everything again)\n");
 }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
+#include "image/temp_dir.hpp"
 #include "support/run_command.hpp"
 
 namespace facet {
@@ -21,14 +22,6 @@ const fs::path kScenes = fs::path(FACET_SOURCE_DIR) / "scenes";
 
 class Determinism : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("facet_determinism_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   Image run(const std::string& arguments, const std::string& name) {
     const fs::path out = dir_ / (name + ".exr");
     const auto r = run_command(kFacet + " " + arguments + " -o " + out.string() + " --pixel-type float --no-preview");
@@ -41,7 +34,7 @@ class Determinism : public ::testing::Test {
            std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
   }
 
-  fs::path dir_;
+  test::TempDir dir_;
 };
 
 TEST_F(Determinism, ReferenceIsBitIdenticalAcrossThreadCountsAndRuns) {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image/temp_dir.hpp"
 #include "support/run_command.hpp"
 
 namespace facet {
@@ -27,14 +28,6 @@ int error_lines(const std::string& err) {
 
 class Faults : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("facet_faults_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string out() const { return (dir_ / "out.exr").string(); }
 
   // Non-zero exit, one error line naming `needle`, and nothing written into the folder (no EXR, no
@@ -44,7 +37,7 @@ class Faults : public ::testing::Test {
     EXPECT_EQ(error_lines(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
     EXPECT_EQ(r.err.back(), '\n') << r.err;
-    EXPECT_TRUE(fs::is_empty(dir_)) << "left behind: " << fs::directory_iterator(dir_)->path();
+    EXPECT_TRUE(fs::is_empty(dir_.path())) << "left behind: " << fs::directory_iterator(dir_.path())->path();
   }
 
   // Starts `command` in the background, sends `signal` after `seconds`, and waits for it.
@@ -53,7 +46,7 @@ class Faults : public ::testing::Test {
                        " $pid; wait $pid");
   }
 
-  fs::path dir_;
+  test::TempDir dir_;
 };
 
 TEST_F(Faults, OutputFolderThatCannotBeCreated) {
