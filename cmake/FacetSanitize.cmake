@@ -7,30 +7,38 @@
 #                                        -fsanitize=fuzzer-no-link and build the libFuzzer programs
 #                                        under fuzz/; the replay drivers are built in every build.
 #
-# FACET_SANITIZER_ENV is the environment every test runs with: the suppression files under
-# tools/sanitizers/ (third-party frames only, each one explained there) and options that make a
-# report fail the test.
+# In a sanitizer build every executable also gets tools/sanitizers/sanitizer_defaults.cpp
+# (facet_sanitize_executable): the options that make a report fail the program, LeakSanitizer's
+# suppression file, and lavapipe kept loaded. Third-party UBSan reports are left out at compile
+# time (tools/sanitizers/ubsan_ignorelist.txt): a check built without recovery cannot be
+# suppressed at run time. Each entry in either file is explained there.
 set(FACET_SANITIZE "" CACHE STRING "Comma-separated sanitizers (address, undefined, leak, ...)")
 option(FACET_FUZZ "Build the libFuzzer targets under fuzz/ (clang only)" OFF)
 
-set(FACET_SANITIZER_DIR ${PROJECT_SOURCE_DIR}/tools/sanitizers)
-set(FACET_SANITIZER_ENV
-  "ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0:strict_string_checks=1"
-  "LSAN_OPTIONS=suppressions=${FACET_SANITIZER_DIR}/lsan.supp:print_suppressions=0"
-  "UBSAN_OPTIONS=suppressions=${FACET_SANITIZER_DIR}/ubsan.supp:print_stacktrace=1:halt_on_error=1")
-
 if(FACET_SANITIZE)
-  # Mesa's lavapipe keeps its allocations reachable only from its own globals; the Vulkan loader
-  # dlclose()s the driver at vkDestroyInstance, and LeakSanitizer then reports them as leaks from
-  # "<unknown module>". Preloading the driver keeps it mapped: with it, no leak is left at all, so
-  # no suppression is needed (tools/sanitizers/lsan.supp).
-  find_library(FACET_LAVAPIPE_ICD NAMES vulkan_lvp)
-  if(FACET_LAVAPIPE_ICD)
-    list(APPEND FACET_SANITIZER_ENV "LD_PRELOAD=${FACET_LAVAPIPE_ICD}")
+  # Line tables are enough for the reports' stack traces and cost far less to compile and link than
+  # full debug information.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    set(facet_sanitizer_flags -gline-tables-only
+        -fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/tools/sanitizers/ubsan_ignorelist.txt)
+  else()
+    set(facet_sanitizer_flags -g1)
   endif()
-  add_compile_options(-fsanitize=${FACET_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer -g)
+  add_compile_options(-fsanitize=${FACET_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer
+                      ${facet_sanitizer_flags})
   add_link_options(-fsanitize=${FACET_SANITIZE})
+  add_library(facet_sanitizer_defaults OBJECT ${PROJECT_SOURCE_DIR}/tools/sanitizers/sanitizer_defaults.cpp)
+  target_compile_definitions(facet_sanitizer_defaults PRIVATE
+    FACET_SANITIZER_DIR="${PROJECT_SOURCE_DIR}/tools/sanitizers")
 endif()
+
+# Adds the sanitizer defaults to executable `target` (nothing without FACET_SANITIZE).
+function(facet_sanitize_executable target)
+  if(FACET_SANITIZE)
+    target_sources(${target} PRIVATE $<TARGET_OBJECTS:facet_sanitizer_defaults>)
+    target_link_libraries(${target} PRIVATE ${CMAKE_DL_LIBS})
+  endif()
+endfunction()
 
 if(FACET_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A longer fuzzing run of one target (docs/hardening.md):
 #   bash tools/fuzz_long.sh TARGET SECONDS [BUILD_DIR]      e.g. bash tools/fuzz_long.sh scene_json 600
-# Needs the sanitizer+fuzz build (tools/test_hardening.sh makes it in build-asan). The corpus grows in
+# Needs the sanitizer+fuzz build (tools/test.sh makes it in build-asan). The corpus grows in
 # BUILD_DIR/fuzz-corpus/TARGET (seeded from fuzz/corpus and fuzz/regressions, which it never writes);
 # crashes, hangs (> 10 s per input) and out-of-memory inputs land in BUILD_DIR/fuzz-artifacts/TARGET/.
 # After fixing one, copy it into fuzz/regressions/TARGET/ so that ctest replays it in every build.
@@ -17,10 +17,6 @@ artifacts="$build/fuzz-artifacts/$target"
 mkdir -p "$corpus" "$artifacts"
 seeds=()
 for dir in "fuzz/corpus/$target" "fuzz/regressions/$target"; do [ -d "$dir" ] && seeds+=("$dir"); done
-# The sanitizer options of the test suite (cmake/FacetSanitize.cmake), so a report is a crash here too.
-export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:detect_stack_use_after_return=0:strict_string_checks=1"
-export LSAN_OPTIONS="suppressions=$PWD/tools/sanitizers/lsan.supp:print_suppressions=0"
-export UBSAN_OPTIONS="suppressions=$PWD/tools/sanitizers/ubsan.supp:print_stacktrace=1:halt_on_error=1"
-export ASAN_SYMBOLIZER_PATH=${ASAN_SYMBOLIZER_PATH:-$(command -v llvm-symbolizer-16 || command -v llvm-symbolizer-14 || true)}
+# The sanitizer options and suppressions are compiled into the program (tools/sanitizers/sanitizer_defaults.cpp).
 exec "$program" "$corpus" "${seeds[@]}" -dict=fuzz/json.dict -max_total_time="$seconds" -timeout=10 \
   -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts/"

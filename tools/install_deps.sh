@@ -12,7 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   openimageio-tools hyperfine
 )
-packages+=("$@")  # extra packages a caller needs (tools/test_hardening.sh: clang-16)
+packages+=("$@")  # extra packages a caller needs (tools/test.sh: clang-16)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -21,7 +21,7 @@
 
 #include "batch/job.hpp"
 #include "image/exr_io.hpp"
-#include "image/temp_dir.hpp"
+#include "support/temp_dir.hpp"
 #include "support/run_command.hpp"
 
 extern char** environ;
@@ -220,42 +220,46 @@ TEST_F(Batch, AKilledRunResumesWithOnlyItsUnfinishedItems) {
   EXPECT_EQ(exr, 16u);
 }
 
-TEST_F(Batch, CtrlCStopsCleanlyAndLosesNothingFinished) {
+TEST_F(Batch, SigintAndSigtermStopCleanlyAndLoseNothingFinished) {
   write("scenes/long.json", plane_scene(16));
   const fs::path job_file = job(R"(["scenes/long.json"])", R"(["reference"])", 12);
-  const fs::path out = dir_ / "out_root", manifest = out / "job.manifest.json";
-  const pid_t pid = spawn_batch(job_file, out, dir_ / "err");
-  ASSERT_GT(pid, 0);
-  ASSERT_GE(wait_for_items(pid, manifest, 2), 2u);
-  ::kill(pid, SIGINT);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  const std::string err = test::read_text(dir_ / "err");
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_NE(WEXITSTATUS(status), 0);
-  EXPECT_NE(err.find("facet: error: interrupted: "), std::string::npos) << err;
-  EXPECT_EQ(err.find("facet: error:"), err.rfind("facet: error:")) << "one error line: " << err;
-  EXPECT_EQ(err.find("failed:"), std::string::npos) << "the abandoned item is not a failure: " << err;
-  // Exactly the manifest's outputs exist (EXR and PNG), each complete; no temporary files remain.
-  const nlohmann::json finished = manifest_items(manifest);
-  ASSERT_LT(finished.size(), 16u);
-  std::map<std::string, std::string> listed;
-  for (const auto& [output, entry] : finished.items())
-    for (const auto& [file, hash] : entry.at("files").items()) listed[file] = hash;
-  size_t files = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(out))
-    if (entry.is_regular_file() && entry.path().extension() != ".json") {
-      ++files;
-      EXPECT_EQ(listed.count(fs::relative(entry.path(), out).string()), 1u) << entry.path();
-    }
-  EXPECT_EQ(files, listed.size());
-  const Totals first = totals(err);
-  EXPECT_EQ(first.rendered, static_cast<int>(finished.size()));
-  EXPECT_EQ(first.rendered + first.unfinished, 16);
+  for (const int signal : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(signal == SIGINT ? "SIGINT" : "SIGTERM");
+    const fs::path out = dir_ / ("out_root_" + std::to_string(signal)), manifest = out / "job.manifest.json";
+    const fs::path err_file = dir_ / ("err_" + std::to_string(signal));
+    const pid_t pid = spawn_batch(job_file, out, err_file);
+    ASSERT_GT(pid, 0);
+    ASSERT_GE(wait_for_items(pid, manifest, 2), 2u);
+    ::kill(pid, signal);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    const std::string err = test::read_text(err_file);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_NE(WEXITSTATUS(status), 0);
+    EXPECT_NE(err.find("facet: error: interrupted: "), std::string::npos) << err;
+    EXPECT_EQ(err.find("facet: error:"), err.rfind("facet: error:")) << "one error line: " << err;
+    EXPECT_EQ(err.find("failed:"), std::string::npos) << "the abandoned item is not a failure: " << err;
+    // Exactly the manifest's outputs exist (EXR and PNG), each complete; no temporary files remain.
+    const nlohmann::json finished = manifest_items(manifest);
+    ASSERT_LT(finished.size(), 16u);
+    std::map<std::string, std::string> listed;
+    for (const auto& [output, entry] : finished.items())
+      for (const auto& [file, hash] : entry.at("files").items()) listed[file] = hash;
+    size_t files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(out))
+      if (entry.is_regular_file() && entry.path().extension() != ".json") {
+        ++files;
+        EXPECT_EQ(listed.count(fs::relative(entry.path(), out).string()), 1u) << entry.path();
+      }
+    EXPECT_EQ(files, listed.size());
+    const Totals first = totals(err);
+    EXPECT_EQ(first.rendered, static_cast<int>(finished.size()));
+    EXPECT_EQ(first.rendered + first.unfinished, 16);
 
-  const auto rerun = batch(job_file, out);
-  ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
-  EXPECT_EQ(totals(rerun.err), (Totals{first.unfinished, first.rendered, 0, 0})) << rerun.err;
+    const auto rerun = batch(job_file, out);
+    ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
+    EXPECT_EQ(totals(rerun.err), (Totals{first.unfinished, first.rendered, 0, 0})) << rerun.err;
+  }
 }
 
 TEST_F(Batch, AChangedSceneInvalidatesExactlyItsOutputs) {

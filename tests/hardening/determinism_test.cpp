@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
-#include "image/temp_dir.hpp"
+#include "support/temp_dir.hpp"
 #include "support/run_command.hpp"
 
 namespace facet {

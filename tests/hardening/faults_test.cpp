@@ -1,13 +1,16 @@
 // Faults from outside, end to end through the `facet` program: each gives a non-zero exit and exactly
 // one "facet: error: ..." line, and leaves no output and no temporary file behind (docs/hardening.md).
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "image/temp_dir.hpp"
+#include "image/exr_io.hpp"
+#include "support/temp_dir.hpp"
 #include "support/run_command.hpp"
 
 namespace facet {
@@ -104,6 +107,41 @@ TEST_F(Faults, AbsurdSizesAreRefusedBeforeAllocation) {
                                  " make noise -o " + out() + " --width 3000000000",
                                  " make noise -o " + out() + " --size 65536"})
     expect_clean_failure(run_command(kFacet + args), "");
+}
+
+TEST_F(Faults, FramesBeyondTheStorageBufferRangeRenderWhole) {
+  // 2900^2 RGBA32F pixels are 134.56 MB, beyond lavapipe's 128 MiB (134.22 MB) storage-buffer range:
+  // the frame must render whole (tile by tile), not fail or leave tiles black. A 290^2 render with
+  // ss:10 traces the same rays (small pixel x, sample s: film (x + (s + 0.5) / 10) / 290 = (10 x + s +
+  // 0.5) / 2900), so each 10x10 block of the large frame averages to its small pixel up to float
+  // rounding of the ray directions and of the sums (a rare edge pixel may flip). Pooled over 29x29-pixel
+  // regions of the small frame the worst mean difference measured 3.5e-7; a black or misplaced tile
+  // would shift its region's mean by its radiance (>= 0.05). Tolerance 1e-4: a few flipped edges.
+  const fs::path large = dir_ / "large.exr", small = dir_ / "small.exr";
+  for (const auto& [file, size] : {std::pair{large, " --width 2900 --height 2900"},
+                                   std::pair{small, " --width 290 --height 290 --method ss:10"}}) {
+    const auto r = run_command(kFacet + " render " + kScene + " -o " + file.string() + size +
+                               " --pixel-type float --no-preview");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const Image big = read_exr(large), reference = read_exr(small);
+  ASSERT_EQ(big.width, 2900);
+  ASSERT_EQ(big.height, 2900);
+  double worst = 0.0;
+  for (int ry = 0; ry < 10; ++ry)
+    for (int rx = 0; rx < 10; ++rx) {
+      double difference = 0.0;
+      for (int y = 29 * ry; y < 29 * (ry + 1); ++y)
+        for (int x = 29 * rx; x < 29 * (rx + 1); ++x) {
+          glm::dvec3 block(0.0);
+          for (int j = 0; j < 10; ++j)
+            for (int i = 0; i < 10; ++i) block += glm::dvec3(big.at(10 * x + i, 10 * y + j));
+          const glm::dvec3 d = block / 100.0 - glm::dvec3(reference.at(x, y));
+          difference += (std::abs(d.x) + std::abs(d.y) + std::abs(d.z)) / 3.0;
+        }
+      worst = std::max(worst, difference / (29.0 * 29.0));
+    }
+  EXPECT_LT(worst, 1e-4) << "a region of the large frame differs from the same rays rendered small";
 }
 
 }  // namespace

@@ -76,7 +76,6 @@ TEST(SceneLoader, ExampleLoadsToItsValues) {
 
 TEST(SceneLoader, EmptyDocumentGivesTheDocumentedDefaults) {
   const Scene s = parse_scene(Json::object(), "");
-  const Camera c;
   EXPECT_EQ(s.camera.position, glm::dvec3(0, 1, 5));
   EXPECT_EQ(s.camera.width, 640);
   EXPECT_EQ(s.camera.height, 360);
