@@ -9,10 +9,14 @@
 //                      colour map), 2 colormip (MIP-mapped colour-mapped texture), 3 filtered (the
 //                      footprint's Gaussian N(mu, sigma^2) integrated against the colour map exactly),
 //                      4 filtered:table (the same Gaussian looked up in the map's prefiltered table)
-//   3 kSamplesPerAxis  K: K x K stratified rays per pixel, averaged (ss:K)
+//   3 kSamplesPerAxis  K: K x K stratified rays per pixel, averaged (ss:K), one stratum per dispatch
+//                      (tile.stratum) so no invocation loops over samples: lavapipe ends an
+//                      invocation's loops after 65535 iterations in all (docs/diffraction.md)
 //   4 kHasDiffraction  diffraction gratings (render/diffraction_shading.glsl)
 //   5 kDiffractionMethod  how a grating's spectrum becomes a colour: 0 spectral (wavelength samples)
 //   6 kHasMicrosurface colour-mapped microsurfaces on finite planes, by kTextureMethod
+//   7 kHasSpheres, 8 kHasTriangles  the scene has spheres / meshes (render/trace.glsl): lavapipe runs
+//                      the body of a loop over no primitives once, masked, so absent kinds are compiled out
 // Tracing, the scene's buffers and each material family's shading live in render/*.glsl.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -23,6 +27,8 @@ layout(constant_id = 3) const uint kSamplesPerAxis = 1u;
 layout(constant_id = 4) const bool kHasDiffraction = false;
 layout(constant_id = 5) const uint kDiffractionMethod = 0u;
 layout(constant_id = 6) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
+layout(constant_id = 7) const bool kHasSpheres = true;
+layout(constant_id = 8) const bool kHasTriangles = true;
 
 #include "lib/camera.glsl"
 #include "lib/lambert.glsl"
@@ -51,7 +57,7 @@ vec3 radiance(vec2 film, float pixel_step) {
   vec3 l = globals.light_direction.xyz;
   // Offset the shadow ray's origin by a distance relative to the scene's scale at p.
   vec3 shadow_origin = p + n * (1e-4 * max(1.0, length(p)));
-  float visibility = dot(n, l) > 0.0 && trace(shadow_origin, l, 0.0, kInfinity).material != kNoHit ? 0.0 : 1.0;
+  float visibility = dot(n, l) > 0.0 && occluded(shadow_origin, l, hit, n) ? 0.0 : 1.0;
   GpuMaterial m = materials[hit.material];
   if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE)  // finite planes only (scene loader)
     return microsurface_radiance(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
@@ -78,11 +84,11 @@ vec3 radiance(vec2 film, float pixel_step) {
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy + tile.rect.xy;
   if (gl_GlobalInvocationID.x >= tile.rect.z || gl_GlobalInvocationID.y >= tile.rect.w) return;
-  vec3 sum = vec3(0.0);
   float step = 1.0 / float(kSamplesPerAxis);
-  for (uint sy = 0u; sy < kSamplesPerAxis; ++sy)
-    for (uint sx = 0u; sx < kSamplesPerAxis; ++sx)
-      sum += radiance(vec2(pixel) + (vec2(sx, sy) + 0.5) * step, step);
-  pixels[gl_GlobalInvocationID.y * tile.rect.z + gl_GlobalInvocationID.x] =
-      vec4(sum / float(kSamplesPerAxis * kSamplesPerAxis), 1.0);
+  vec3 sample_radiance = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
+  // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
+  // end: the same float operations as averaging them within one invocation.
+  uint i = gl_GlobalInvocationID.y * tile.rect.z + gl_GlobalInvocationID.x;
+  vec3 sum = tile.stratum.z != 0u ? pixels[i].rgb + sample_radiance : sample_radiance;
+  pixels[i] = vec4(tile.stratum.w != 0u ? sum / float(kSamplesPerAxis * kSamplesPerAxis) : sum, 1.0);
 }

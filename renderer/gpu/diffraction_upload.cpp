@@ -19,7 +19,7 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
 }
 
 DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
-                                      const diffraction::DiffractionSettings& settings, int rays_per_pixel) {
+                                      const diffraction::DiffractionSettings& settings) {
   std::vector<glm::vec2> coefficients;
   std::vector<GpuDiffractionMaterial> materials;
   std::vector<glm::vec4> wavelengths;
@@ -32,13 +32,12 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
     if (!prepared) continue;
     const long iterations = diffraction_loop_iterations(*prepared);
     if (method != diffraction::DiffractionMethod::Preintegrated &&
-        rays_per_pixel * (iterations + kTraceLoopReserve) > kLoopIterationLimit)
+        iterations + kTraceLoopReserve > kLoopIterationLimit)
       throw Error("diffraction material '" + scene.material_names[i] + "': " +
                   std::to_string(prepared->samples.lambda_nm.size()) + " wavelengths x " +
                   std::to_string((2 * prepared->tables.r + 1) * (2 * prepared->tables.r + 1)) + " bins x " +
                   std::to_string(prepared->tables.N) + " Taylor terms need " + std::to_string(iterations) +
-                  " shader loop iterations per ray, " + std::to_string(rays_per_pixel) +
-                  " rays per pixel; lavapipe ends a pixel's loops after " + std::to_string(kLoopIterationLimit) +
+                  " shader loop iterations per ray; lavapipe ends a pixel's loops after " + std::to_string(kLoopIterationLimit) +
                   ": raise the tolerance or use fewer wavelengths");
     const std::vector<glm::vec2> table = prepared->tables.coefficients_f32();
     const diffraction::WavelengthSamples& s = prepared->samples;

@@ -38,11 +38,11 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
 
 // Diffraction material i of the scene (counting only diffraction materials, in scene order) is
 // entry i of `materials`: the index scene_upload puts in GpuMaterial::kind.y. Throws facet::Error
-// if the tables exceed the device's storage-buffer range, or if `rays_per_pixel` rays of a material
-// would exceed the loop limit above (spectral and orders), or if the materials ask for different
+// if the tables exceed the device's storage-buffer range, or if one ray of a material would exceed
+// the loop limit above (spectral and orders; ss:K runs one ray per invocation and dispatch), or if the materials ask for different
 // methods (gpu/diffraction_fast_upload.hpp). A scene without diffraction gets one-element placeholders (the
 // pass binds them, its shader never reads them).
 DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
-                                      const diffraction::DiffractionSettings& settings = {}, int rays_per_pixel = 1);
+                                      const diffraction::DiffractionSettings& settings = {});
 
 }  // namespace facet::gpu

@@ -27,9 +27,9 @@ int tile_count(int width, int height, int tile_size) {
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size)
     : scene_(&scene),
       tile_size_(tile_size > 0 ? tile_size : throw Error("tile size must be positive")),
+      samples_per_axis_(method.samples_per_axis),
       buffers_(upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable)),
-      diffraction_(upload_diffraction(context, scene, method.diffraction,
-                                      method.samples_per_axis * method.samples_per_axis)),
+      diffraction_(upload_diffraction(context, scene, method.diffraction)),
       pixels_(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size),
       kernel_(context, {.name = "render_direct",
                         .spirv = render_direct_spv,
@@ -41,7 +41,9 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                                            {3, static_cast<uint32_t>(method.samples_per_axis)},
                                            {4, uses<DiffractionMaterial>(scene) ? 1u : 0u},
                                            {5, static_cast<uint32_t>(diffraction_.method)},
-                                           {6, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u}}}) {}
+                                           {6, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u},
+                                           {7, scene.spheres.empty() ? 0u : 1u},
+                                           {8, scene.meshes.empty() ? 0u : 1u}}}) {}
 
 std::vector<const vk::Buffer*> DirectPass::bindings() const {
   std::vector<const vk::Buffer*> all = buffers_.bindings(pixels_);
@@ -61,9 +63,12 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   for (int y0 = 0; y0 < height; y0 += tile_size_)
     for (int x0 = 0; x0 < width; x0 += tile_size_) {
       const int w = std::min(tile_size_, width - x0), h = std::min(tile_size_, height - y0);
-      GpuTile tile{uvec4(x0, y0, w, h)};
       glm::uvec3 groups((w + kWorkgroup - 1) / kWorkgroup, (h + kWorkgroup - 1) / kWorkgroup, 1);
-      local.gpu_ms += kernel_.dispatch(bindings, &tile, groups);
+      const int k = samples_per_axis_, strata = k * k;
+      for (int s = 0; s < strata; ++s) {  // ss:K: one stratum per dispatch, accumulated in pixels_
+        GpuTile tile{uvec4(x0, y0, w, h), uvec4(s % k, s / k, s > 0 ? 1 : 0, s == strata - 1 ? 1 : 0)};
+        local.gpu_ms += kernel_.dispatch(bindings, &tile, groups);
+      }
       pixels_.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) image.set(x0 + x, y0 + y, glm::vec3(tile_rgba[static_cast<size_t>(y) * w + x]));

@@ -37,7 +37,7 @@ class DirectPass {
              int tile_size = kDefaultTileSize);
 
   // Renders width x height from `camera` in square tiles of `tile_size` pixels, one submission
-  // per tile, so no single submission runs for seconds.
+  // per tile (K^2 for ss:K, one per stratum), so no single submission runs for seconds.
   Image render(const Camera& camera, int width, int height, RenderStats* stats = nullptr,
                const TileProgress& progress = {});
 
@@ -49,6 +49,7 @@ class DirectPass {
 
   const Scene* scene_;
   int tile_size_;
+  int samples_per_axis_;  // ss:K: K^2 dispatches per tile
   SceneBuffers buffers_;
   DiffractionBuffers diffraction_;
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range

@@ -82,9 +82,11 @@ struct GpuColormap {
   vec4 table_range;   // mu_min, mu_max, sigma_max (texture values), sigma_floor: below it, the exact filter
 };
 
-// Push constants of the per-pixel passes: the tile of the image this dispatch covers.
+// Push constants of the per-pixel passes: the tile of the image this dispatch covers and, for K x K
+// supersampling run as K^2 dispatches, which stratum of each pixel this one traces.
 struct GpuTile {
-  uvec4 rect;  // x0, y0, width, height
+  uvec4 rect;     // x0, y0, width, height
+  uvec4 stratum;  // sx, sy in [0, K); z: 1 adds to the tile's pixels (not the first stratum); w: 1 scales by 1/K^2 (the last)
 };
 
 #endif

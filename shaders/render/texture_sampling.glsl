@@ -33,11 +33,10 @@ TexelQuad texel_quad(uint level, vec2 uv) {
                    texels[row1 + uint(x.i1)], vec2(x.w1, y.w1));
 }
 
+vec4 bilinear(TexelQuad q) { return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t11, q.f.x), q.f.y); }
+
 // Bilinear between texel centres, periodic (at level 0 as renderer/cpu/material_shading.cpp).
-vec4 sample_level(uint level, vec2 uv) {
-  TexelQuad q = texel_quad(level, uv);
-  return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t11, q.f.x), q.f.y);
-}
+vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(level, uv)); }
 
 vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod) {
   float l0 = floor(lod);
@@ -141,14 +140,15 @@ vec3 colormap_gaussian(GpuColormap map, float mu, float sigma) {
 vec2 footprint_moments(uint first, uint count, vec2 uv, float lod, vec2 axis_a, vec2 axis_b) {
   float l0 = floor(lod);
   uint level = uint(l0);
+  // One quad of texels serves both cases: lavapipe runs both sides of a branch, so a lookup per
+  // side would cost two.
+  TexelQuad q = texel_quad(first + level, uv);
+  vec4 s = bilinear(q);
   vec2 a;
   if (level == 0u) {
-    TexelQuad q = texel_quad(first, uv);
-    float t = mix(mix(q.t00.x, q.t10.x, q.f.x), mix(q.t01.x, q.t11.x, q.f.x), q.f.y);
     vec2 gradient = vec2(mix(q.t10.x - q.t00.x, q.t11.x - q.t01.x, q.f.y), mix(q.t01.x - q.t00.x, q.t11.x - q.t10.x, q.f.x));
-    a = vec2(t, t * t + linearised_tap_variance(gradient, axis_a, axis_b));
+    a = vec2(s.x, s.x * s.x + linearised_tap_variance(gradient, axis_a, axis_b));
   } else {
-    vec4 s = sample_level(first + level, uv);
     a = vec2(s.x, s.y + s.z);
   }
   if (level + 1u >= count || lod == l0) return a;  // integral lod: one level

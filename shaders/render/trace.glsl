@@ -1,5 +1,7 @@
-// Closest hits of rays against the scene's planes, spheres and BVH of triangles, and the surface
-// parameterisation (uv, dp/du, dp/dv) at a hit: what every material's shading starts from.
+// Closest hits of rays against the scene's planes, spheres and BVH of triangles, any hit for shadow
+// rays, and the surface parameterisation (uv, dp/du, dp/dv) at a hit: what every material's shading
+// starts from. The including shader declares the specialization constants kHasSpheres and
+// kHasTriangles (false: the scene has none, and their loops are compiled out).
 #ifndef FACET_RENDER_TRACE_GLSL
 #define FACET_RENDER_TRACE_GLSL
 #include "lib/analytic_intersect.glsl"
@@ -22,8 +24,10 @@ struct Hit {
   vec2 barycentric;  // triangles
 };
 
-Hit trace_triangles(vec3 o, vec3 d, Hit hit) {
-  if (globals.counts.z == 0u) return hit;
+// The closest hit before hit.t, or with `any_hit` the first one found in traversal order (shadow
+// rays need only whether one exists; callers pass a constant, so each use compiles to one variant).
+Hit trace_triangles(vec3 o, vec3 d, Hit hit, bool any_hit) {
+  if (!kHasTriangles || globals.counts.z == 0u) return hit;
   vec3 inv_d = 1.0 / d;
   uint stack[kStackSize];
   int top = 0;
@@ -39,6 +43,7 @@ Hit trace_triangles(vec3 o, vec3 d, Hit hit) {
         vec3 n = (1.0 - tb.y - tb.z) * tri.n0.xyz + tb.y * tri.n1.xyz + tb.z * tri.n2.xyz;
         if (dot(n, n) == 0.0) n = cross(tri.p1.xyz - tri.p0.xyz, tri.p2.xyz - tri.p0.xyz);
         hit = Hit(tb.x, n, tri.material.x, kTriangle, i, tb.yz);
+        if (any_hit) return hit;
       }
     } else if (top + 2 <= kStackSize) {
       stack[top++] = node.left_or_first + 1u;
@@ -62,12 +67,33 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max) {
     if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * d))
       hit = Hit(t, planes[i].normal.xyz, planes[i].material.x, kPlane, i, vec2(0.0));
   }
-  for (uint i = 0u; i < globals.counts.y; ++i) {
+  for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
     vec4 s = spheres[i].center_radius;
     float t = intersect_sphere(o, d, s.xyz, s.w, t_min, hit.t);
     if (t > 0.0) hit = Hit(t, o + t * d - s.xyz, spheres[i].material.x, kSphere, i, vec2(0.0));
   }
-  return trace_triangles(o, d, hit);
+  return trace_triangles(o, d, hit, false);
+}
+
+// Whether anything lies on the shadow ray o + t l, t in (0, inf), leaving the surface at `from`
+// (offset from it along the shading normal n facing the ray's side, with dot(n, l) > 0). The search
+// stops at the first occluder. Two primitives are skipped because they provably cannot block it: the
+// plane `from` lies on (the ray leaves it and never returns), and `from`'s sphere when the ray leaves
+// its outside (a convex body lies entirely behind its tangent plane; from inside, n points inwards
+// and the far wall does block).
+bool occluded(vec3 o, vec3 l, Hit from, vec3 n) {
+  uint skip_plane = from.primitive == kPlane ? from.index : kNoHit;
+  uint skip_sphere = from.primitive == kSphere && dot(from.normal, n) > 0.0 ? from.index : kNoHit;
+  for (uint i = 0u; i < globals.counts.x; ++i) {
+    if (i == skip_plane) continue;
+    float t = intersect_plane(o, l, planes[i].point.xyz, planes[i].normal.xyz, 0.0, kInfinity);
+    if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * l)) return true;
+  }
+  for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
+    vec4 s = spheres[i].center_radius;
+    if (i != skip_sphere && intersect_sphere(o, l, s.xyz, s.w, 0.0, kInfinity) > 0.0) return true;
+  }
+  return trace_triangles(o, l, Hit(kInfinity, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0)), true).material != kNoHit;
 }
 
 // uv at p and the tangents dp/du, dp/dv (the conventions of renderer/cpu/ray_caster.cpp).

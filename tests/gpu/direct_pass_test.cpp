@@ -5,26 +5,11 @@
 
 #include "cpu/direct_cpu.hpp"
 #include "gpu/direct_pass.hpp"
+#include "lambert_spheres_scene.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
 namespace {
-
-Scene analytic_scene() {
-  Scene scene;
-  scene.camera.position = {0.0, 1.5, 6.0};
-  scene.camera.target = {0.0, 0.7, 0.0};
-  scene.camera.fov_y_deg = 40.0;
-  scene.light.direction = glm::normalize(glm::dvec3(0.4, 1.0, 0.3));
-  scene.light.irradiance = {3.0, 2.8, 2.6};
-  scene.ambient = {0.1, 0.12, 0.15};
-  scene.background = {0.2, 0.3, 0.4};
-  scene.materials = {LambertMaterial{{0.8, 0.8, 0.8}}, LambertMaterial{{0.9, 0.2, 0.1}}};
-  scene.planes.push_back({{0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0});
-  scene.spheres.push_back({{-0.8, 0.7, 0.0}, 0.7, 1});
-  scene.spheres.push_back({{1.0, 0.5, 0.8}, 0.5, 0});
-  return scene;
-}
 
 // A square pyramid (4 sides + base, 6 triangles) with flat shading.
 Mesh pyramid(glm::dvec3 base_centre, double half_size, double height) {
@@ -67,7 +52,7 @@ constexpr double kMinAgreeingFraction = 0.99;
 
 TEST(DirectPass, GpuMatchesCpuOnAnalyticScene) {
   auto context = test::make_validated_context();
-  Scene scene = analytic_scene();
+  Scene scene = test::lambert_spheres_scene();
   Image gpu = gpu::render_direct(*context, scene, 96, 64, {}, nullptr, {}, 32);  // several tiles
   Image cpu = cpu::render_direct_cpu(scene, 96, 64);
   Agreement a = compare(gpu, cpu, kTolerance);
@@ -78,7 +63,7 @@ TEST(DirectPass, GpuMatchesCpuOnAnalyticScene) {
 
 TEST(DirectPass, GpuBvhMatchesEmbreeOnMeshes) {
   auto context = test::make_validated_context();
-  Scene scene = analytic_scene();
+  Scene scene = test::lambert_spheres_scene();
   scene.spheres.clear();
   scene.meshes.push_back(pyramid({0.0, 0.0, 0.0}, 0.8, 1.4));
   scene.meshes.push_back(pyramid({1.4, 0.0, 1.0}, 0.4, 0.6));
@@ -98,7 +83,7 @@ TEST(DirectPass, GpuBvhMatchesEmbreeOnMeshes) {
 // shader (enabled by its specialization constant) against the double twin.
 TEST(DirectPass, MicroflakeMaterialsMatchCpu) {
   auto context = test::make_validated_context();
-  Scene scene = analytic_scene();
+  Scene scene = test::lambert_spheres_scene();
   scene.spheres.clear();
   const std::pair<Ndf, double> flakes[] = {{Ndf::Beckmann, 0.3}, {Ndf::Ggx, 0.05}, {Ndf::Ellipsoidal, 0.9},
                                            {Ndf::SphericalGaussian, 0.2}, {Ndf::SphericalGaussian, 50.0}};
@@ -118,7 +103,7 @@ TEST(DirectPass, MicroflakeMaterialsMatchCpu) {
 
 TEST(DirectPass, EmptySceneShowsBackground) {
   auto context = test::make_validated_context();
-  Scene scene = analytic_scene();
+  Scene scene = test::lambert_spheres_scene();
   scene.planes.clear();
   scene.spheres.clear();
   Image gpu = gpu::render_direct(*context, scene, 16, 8);
