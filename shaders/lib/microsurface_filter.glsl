@@ -9,8 +9,10 @@
 #include "lib/gaussian_masking.glsl"
 #include "lib/visible_slope.glsl"
 
-// Nodes per axis of the Gauss-Hermite grid over D_s, and midpoint nodes of the visible-height rule.
+// Nodes per axis of the Gauss-Hermite grid over D_s (MS_SLOPE_NODES_COSINE when only the cosine to the
+// light is integrated, no slope colour map), and midpoint nodes of the visible-height rule.
 #define MS_SLOPE_NODES 4
+#define MS_SLOPE_NODES_COSINE 3
 #define MS_HEIGHT_NODES 8
 // Variance floors: a zero-variance footprint (a point) keeps every ratio of visible_slope finite; the
 // floors move slopes by 1e-6 and heights by 1e-9 world units, far below what a pixel resolves.
@@ -95,19 +97,24 @@ struct MicrosurfaceSlopeNode {
   real weight;
 };
 
-// Gauss-Hermite (probabilists') abscissa and weight i of MS_SLOPE_NODES = 4: roots of He_4,
-// x^2 = 3 -+ sqrt(6), weights 4!/(16 He_3(x)^2).
-inline real2 microsurface_hermite(int i) {
+// Gauss-Hermite (probabilists') abscissa and weight i of the n-point rule, n = MS_SLOPE_NODES = 4
+// (roots of He_4, x^2 = 3 -+ sqrt(6), weights 4!/(16 He_3(x)^2)) or n = MS_SLOPE_NODES_COSINE = 3
+// (x = 0, -+sqrt(3), weights 2/3, 1/6).
+inline real2 microsurface_hermite(int n, int i) {
+  if (n == 3) {
+    real x3 = i == 1 ? real(0) : real(1.7320508075688772);
+    return real2(i == 0 ? -x3 : x3, i == 1 ? real(2) / real(3) : real(1) / real(6));
+  }
   real x = i == 0 || i == 3 ? real(2.3344142183389773) : real(0.74196378430272586);
   real w = i == 0 || i == 3 ? real(0.045875854768068492) : real(0.45412414523193151);
   return real2(i < 2 ? -x : x, w);
 }
 
-// Node (i, j) of the Gauss-Hermite grid over the Gaussian approximation N(mean, cov) of D_s: the
+// Node (i, j) of the n x n Gauss-Hermite grid over the Gaussian approximation N(mean, cov) of D_s: the
 // standard grid mapped through the Cholesky factor of cov.
-inline MicrosurfaceSlopeNode microsurface_slope_node(VisibleSlope ds, int i, int j) {
-  real2 a = microsurface_hermite(i);
-  real2 b = microsurface_hermite(j);
+inline MicrosurfaceSlopeNode microsurface_slope_node(VisibleSlope ds, int n, int i, int j) {
+  real2 a = microsurface_hermite(n, i);
+  real2 b = microsurface_hermite(n, j);
   real l00 = sqrt(ds.cov.x);
   real l10 = l00 > real(0) ? ds.cov.z / l00 : real(0);
   real l11 = sqrt(max(ds.cov.y - l10 * l10, real(0)));

@@ -81,9 +81,11 @@ vec3 microsurface_facet_radiance(GpuMaterial m, vec3 albedo, MicrosurfaceStatist
 vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats, vec3 v, vec3 l, float visibility) {
   MicrosurfaceVisibility vis = microsurface_visibility(stats, v, l);
   vec3 slope_sum = vec3(0.0), slope_cos_sum = vec3(0.0);
-  for (int i = 0; i < MS_SLOPE_NODES; ++i)
-    for (int j = 0; j < MS_SLOPE_NODES; ++j) {
-      MicrosurfaceSlopeNode node = microsurface_slope_node(vis.ds, i, j);
+  // Without a slope colour map only the smooth cosine is integrated: the 3 x 3 rule suffices there.
+  int slope_nodes = m.texture.w == FACET_NO_COLORMAP ? MS_SLOPE_NODES_COSINE : MS_SLOPE_NODES;
+  for (int i = 0; i < slope_nodes; ++i)
+    for (int j = 0; j < slope_nodes; ++j) {
+      MicrosurfaceSlopeNode node = microsurface_slope_node(vis.ds, slope_nodes, i, j);
       vec3 a = node.weight * microsurface_slope_colour(m, node.s);
       slope_sum += a;
       slope_cos_sum += a * max(dot(microsurface_normal(node.s), l), 0.0);
