@@ -39,6 +39,14 @@ double worst_orders(const DiffractionOrderLattice& L) {
   return (extent / L.frequency.x + 1.0) * (extent / L.frequency.y + 1.0);
 }
 
+// F.11: a point k (u, v) lies within the reach of pi rho^2 / (f_x f_y) orders on average (lattice
+// points in a disc of radius rho around a uniformly placed point), and each of them is integrated
+// over the pixel's wavelengths with steps of at most max_step.
+double expected_nodes(const DiffractionOrderLattice& L) {
+  const double overlap = kPi * L.reach * L.reach / (L.frequency.x * L.frequency.y);
+  return overlap * (kCieLambdaMaxNm - kCieLambdaMinNm) / L.max_step;
+}
+
 }  // namespace
 
 PatchRepeats patch_repeats(const Grating& grating) { return {repeats_along(grating, 1, 0), repeats_along(grating, 0, 1)}; }
@@ -60,7 +68,9 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
   L.peak_step = 0.5 * kPi * std::sqrt(2.0 / std::log(4.0 / tolerance));
   L.max_step = 0.5 * observer_spacing(tolerance, light);
   plan.worst_orders = worst_orders(L);
-  plan.periodic = plan.worst_orders <= kMaxOrdersPerPixel;
+  plan.expected_nodes = expected_nodes(L);
+  plan.restricted = plan.worst_orders <= kMaxOrdersPerPixel &&
+                    plan.expected_nodes < static_cast<double>(fallback.lambda_nm.size());
   plan.lambda0_nm = kCieLambdaMinNm;
   for (double lambda = kCieLambdaMinNm; lambda <= kCieLambdaMaxNm; lambda += 1.0)
     plan.observer.push_back(xyz_density(lambda, light));
@@ -71,24 +81,23 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
 glm::dvec3 evaluate_orders(const SpectralTables& tables, const OrderWavelengths& plan, const glm::dvec3& wi,
                            const glm::dvec3& wr) {
   auto brdf = [&](double lambda) { return evaluate_taylor(tables, {wi, wr, lambda}).brdf; };
-  if (!plan.periodic) return integrate_linear_srgb(plan.fallback, brdf);
+  if (!plan.restricted) return integrate_linear_srgb(plan.fallback, brdf);
   const DiffractionOrderLattice& L = plan.lattice;
   const glm::dvec2 uv = -glm::dvec2(wi.x + wr.x, wi.y + wr.y);
   const DiffractionOrderSpan span = diffraction_order_span(L, uv);
   const int entries = static_cast<int>(plan.observer.size());
   glm::dvec3 xyz(0.0);
-  for (int jy = span.lo.y; jy <= span.hi.y; ++jy)
-    for (int jx = span.lo.x; jx <= span.hi.x; ++jx) {
-      const glm::ivec2 j(jx, jy);
-      const DiffractionOrderInterval I = diffraction_order_interval(L, uv, j);
-      for (int i = 0; i < I.nodes; ++i) {
-        const double lambda = diffraction_order_lambda(I, i);
-        const DiffractionObserverLookup o = diffraction_observer_lookup(lambda, plan.lambda0_nm, entries);
-        if (!o.valid) continue;
-        const glm::dvec3 observer = glm::mix(plan.observer[o.index], plan.observer[o.index + 1], o.f);
-        xyz += (brdf(lambda) * diffraction_order_share(L, uv, lambda, j) * I.step) * observer;
-      }
+  for (int c = 0; c < diffraction_order_candidates(span); ++c) {  // the shader's order of summation
+    const glm::ivec2 j = diffraction_order_candidate(span, c);
+    const DiffractionOrderInterval I = diffraction_order_interval(L, uv, j);
+    for (int i = 0; i < I.nodes; ++i) {
+      const double lambda = diffraction_order_lambda(I, i);
+      const DiffractionObserverLookup o = diffraction_observer_lookup(lambda, plan.lambda0_nm, entries);
+      if (!o.valid) continue;
+      const glm::dvec3 observer = glm::mix(plan.observer[o.index], plan.observer[o.index + 1], o.f);
+      xyz += (brdf(lambda) * diffraction_order_share(L, uv, lambda, j) * I.step) * observer;
     }
+  }
   return spectral_xyz_to_linear_srgb(xyz);
 }
 

@@ -29,10 +29,14 @@ PatchRepeats patch_repeats(const Grating& grating);
 // does not reach costs one interval test, ~1/50 of a BRDF evaluation.
 constexpr int kMaxOrdersPerPixel = 128;
 
+// The restriction is used only where it is cheaper: F.10's candidates at most kMaxOrdersPerPixel
+// and F.11's expected nodes fewer than the fallback's wavelengths (a window too wide to resolve
+// the lattice covers every wavelength with several orders, each integrated on its own).
 struct OrderWavelengths {
   kernels::f64::DiffractionOrderLattice lattice{};
-  bool periodic = false;    // false: evaluate_orders runs the spectral path on `fallback`
+  bool restricted = false;  // false: evaluate_orders runs the spectral path on `fallback`
   double worst_orders = 0;  // the F.10 estimate
+  double expected_nodes = 0;  // F.11: BRDF evaluations per pixel the orders would cost, at least, on average
   double lambda0_nm = 0.0;  // observer[i] = xyz_density(lambda0 + i nm), the observer per nm
   std::vector<glm::dvec3> observer;
   WavelengthSamples fallback;

@@ -55,7 +55,7 @@ void append_fast_paths(FastPathData& data, diffraction::GpuDiffractionMaterial& 
   if (method == DiffractionMethod::Orders) {
     const diffraction::OrderWavelengths plan = diffraction::plan_order_wavelengths(
         *source.grating, prepared.tables, source.tolerance, source.illuminant, prepared.samples);
-    if (!plan.periodic) return;  // fast_scalars.z = 0: the pass runs the spectral path
+    if (!plan.restricted) return;  // fast_scalars.z = 0: the pass runs the spectral path
     const auto& L = plan.lattice;
     material.order_lattice0 = glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach);
     material.order_lattice1 = glm::vec4(L.k_min, L.k_max, L.peak_step, L.max_step);

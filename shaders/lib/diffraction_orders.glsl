@@ -33,6 +33,19 @@ inline DiffractionOrderSpan diffraction_order_span(DiffractionOrderLattice L, re
   return DiffractionOrderSpan(ivec2(ceil(a / L.frequency)), ivec2(floor(b / L.frequency)));
 }
 
+// The candidates of a span as one list, row by row (j_y outer, j_x inner): their count (0 for an
+// empty span) and the c-th, c < count.
+// One flat index lets a caller walk all orders' nodes in a single loop (render/diffraction_orders.glsl).
+inline int diffraction_order_candidates(DiffractionOrderSpan s) {
+  ivec2 n = max(s.hi - s.lo + ivec2(1, 1), ivec2(0, 0));
+  return n.x * n.y;
+}
+
+inline ivec2 diffraction_order_candidate(DiffractionOrderSpan s, int c) {
+  int width = s.hi.x - s.lo.x + 1;
+  return s.lo + ivec2(c % width, c / width);
+}
+
 // The midpoint nodes of order j in wavelength: lambda = lambda_lo + (i + 1/2) step, i < nodes
 // (nodes = 0: order j does not reach (u, v)).
 struct DiffractionOrderInterval {

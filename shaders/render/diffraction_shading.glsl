@@ -5,7 +5,7 @@
 //   0 spectral   sum over the material's wavelength samples of the Taylor BRDF times their XYZ weights
 //   1 preintegrated  the material's wavelength-integrated tables (bindings 14, 15), a polynomial in w
 //   2 orders     the Taylor BRDF at the wavelengths near the grating's orders (observer: binding 16);
-//                spectral for a grating the host found not periodic
+//                spectral where the host found restricting not worth it (not periodic, or orders unresolved: F.10, F.11)
 // The includer declares kHasDiffraction and kDiffractionMethod before including this file.
 #ifndef FACET_RENDER_DIFFRACTION_SHADING_GLSL
 #define FACET_RENDER_DIFFRACTION_SHADING_GLSL

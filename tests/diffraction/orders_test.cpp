@@ -122,7 +122,7 @@ TEST(Orders, IntervalsHoldEveryReachingWavelength) {
 TEST(Orders, ColoursMatchTheSpectralPath) {
   for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
     const Case c = make_case(json);
-    ASSERT_TRUE(c.plan.periodic) << json;
+    ASSERT_TRUE(c.plan.restricted) << json;
     const WavelengthSamples dense = wavelength_samples(0.25);
     const double period_x = 2 * kPi / c.plan.lattice.frequency.x;
     std::mt19937 rng(4);
@@ -210,7 +210,7 @@ TEST(Orders, RandomHeightFieldFallsBackToSpectral) {
       plan_order_wavelengths(g, tables, kTolerance, Illuminant::D65, diffraction_wavelength_samples(tables, kTolerance));
   EXPECT_EQ(patch_repeats(g).x, 1);
   EXPECT_EQ(patch_repeats(g).y, 1);
-  EXPECT_FALSE(plan.periodic);
+  EXPECT_FALSE(plan.restricted);
   EXPECT_GT(plan.worst_orders, kMaxOrdersPerPixel);
   const glm::dvec3 wi = direction(0.2, 0.1);
   for (double x : {-0.5, -0.2, 0.1}) {
@@ -255,6 +255,87 @@ TEST(Orders, GpuMatchesTheDoubleTwin) {
     }
     std::printf("GPU vs double twin, %s: worst |error| / brightest channel = %.3g\n", json, worst);
   }
+}
+
+// The flat walk of render/diffraction_orders.glsl (one loop over a pixel's nodes, advancing through
+// its candidates) on views all over the hemisphere of the crossed grating, where neighbouring
+// queries have different spans, empty candidates and several orders: same bound as above.
+TEST(Orders, GpuMatchesTheDoubleTwinOverTheHemisphere) {
+  auto context = test::make_validated_context();
+  const Case c = make_case(kCrossed);
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> pairs;
+  while (pairs.size() < 512) {
+    const glm::dvec2 i(0.7 * unit(rng), 0.7 * unit(rng)), r(unit(rng), unit(rng));
+    if (glm::dot(i, i) < 1.0 && glm::dot(r, r) < 1.0) pairs.emplace_back(direction(i.x, i.y), direction(r.x, r.y));
+  }
+  const test::OrdersProbeRun run = test::run_orders_probe(*context, c.tables, c.plan, pairs);
+  std::vector<glm::dvec3> want;
+  double peak = 0.0, worst = 0.0;
+  int lit = 0;
+  for (const auto& [a, b] : pairs) {
+    want.push_back(evaluate_orders(c.tables, c.plan, a, b));
+    peak = std::max(peak, glm::length(want.back()));
+  }
+  for (size_t q = 0; q < pairs.size(); ++q) {
+    const double scale = std::max({std::abs(want[q].x), std::abs(want[q].y), std::abs(want[q].z)});
+    lit += scale > 1e-3 * peak;
+    for (int ch = 0; ch < 3; ++ch) {
+      const double error = std::abs(run.rgb[q][ch] - want[q][ch]);
+      EXPECT_LE(error, 1e-4 * scale + kTolerance * kTolerance * peak) << q;
+      if (scale > 1e-3 * peak) worst = std::max(worst, error / scale);
+    }
+  }
+  EXPECT_GT(lit, 10);  // the views do meet orders
+  std::printf("GPU vs double twin over the hemisphere: %d lit views, worst |error| / brightest channel = %.3g\n", lit,
+              worst);
+}
+
+// F.11 against brute force. The mean number of orders within the reach of a random point of the
+// (u, v) k plane is pi rho^2 / (f_x f_y) (counted over 20000 points, within 5 %), and the nodes a
+// pixel costs (every candidate's interval, counted like EvaluatesFarFewer...) average at least
+// expected_nodes over views of the hemisphere. The snake's fingers (scenes/snake_fingers.json:
+// window 750 nm, lattice 750 x 3000 nm) overlap ~4 orders everywhere: restricting would cost ~9x
+// the spectral wavelengths, so the plan falls back; the sinusoid's well separated orders do not.
+TEST(Orders, WindowsTooWideForTheLatticeFallBackToSpectral) {
+  const Case snake = make_case(R"({"type":"fingers","period_nm":750,"amplitude_nm":80,"size_um":3,"samples":48,)"
+                               R"("finger_length_nm":1500,"coherence_um":0.75})");
+  const k64::DiffractionOrderLattice& L = snake.plan.lattice;
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double within = 0.0;
+  const int points = 20000;
+  for (int q = 0; q < points; ++q) {
+    const glm::dvec2 p = glm::dvec2(unit(rng), unit(rng)) * L.frequency;  // one lattice cell suffices
+    for (int jy = -5; jy <= 5; ++jy)
+      for (int jx = -5; jx <= 5; ++jx) within += glm::length(p - glm::dvec2(jx, jy) * L.frequency) <= L.reach;
+  }
+  const double overlap = kPi * L.reach * L.reach / (L.frequency.x * L.frequency.y);
+  EXPECT_NEAR(within / points, overlap, 0.05 * overlap);
+  EXPECT_NEAR(snake.plan.expected_nodes, overlap * (kCieLambdaMaxNm - kCieLambdaMinNm) / L.max_step, 1e-9);
+  double nodes = 0.0;
+  int pixels = 0;
+  for (int q = 0; q < 2000; ++q) {
+    const glm::dvec2 i(2 * unit(rng) - 1, 2 * unit(rng) - 1), r(2 * unit(rng) - 1, 2 * unit(rng) - 1);
+    if (glm::dot(i, i) >= 1.0 || glm::dot(r, r) >= 1.0) continue;
+    const glm::dvec2 uv = -(i + r);
+    const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, uv);
+    for (int c = 0; c < k64::diffraction_order_candidates(span); ++c)
+      nodes += k64::diffraction_order_interval(L, uv, k64::diffraction_order_candidate(span, c)).nodes;
+    ++pixels;
+  }
+  const double spectral_count = static_cast<double>(snake.plan.fallback.lambda_nm.size());
+  std::printf("snake fingers: overlap %.2f, %.0f nodes per pixel measured, %.0f expected, %.0f wavelengths\n", overlap,
+              nodes / pixels, snake.plan.expected_nodes, spectral_count);
+  EXPECT_GE(nodes / pixels, snake.plan.expected_nodes);
+  EXPECT_GT(snake.plan.expected_nodes, spectral_count);
+  EXPECT_FALSE(snake.plan.restricted);
+  const glm::dvec3 wi = direction(0.2, 0.3), wr = direction(-0.5, 0.1);
+  EXPECT_EQ(evaluate_orders(snake.tables, snake.plan, wi, wr), spectral(snake, snake.plan.fallback, wi, wr));
+  const Case sinusoid = make_case(kSinusoid);
+  EXPECT_TRUE(sinusoid.plan.restricted);
+  EXPECT_LT(sinusoid.plan.expected_nodes, 1.0);
 }
 
 // Grazing and extreme directions give finite colours.

@@ -66,6 +66,24 @@ TEST(DiffractionFastPathsRender, AgreeWithTheSpectralPath) {
   EXPECT_LE(orders.max_abs, 1e-2 * orders.peak);
 }
 
+// scenes/snake_fingers.json: its window does not resolve the grating's orders (F.11), so `orders`
+// runs the spectral loop and the frame is the spectral frame, bit for bit.
+TEST(DiffractionFastPathsRender, UnresolvedOrdersRenderTheSpectralFrame) {
+  auto context = test::make_validated_context();
+  const Scene scene = load_scene(std::filesystem::path(FACET_SOURCE_DIR) / "scenes/snake_fingers.json");
+  const Image spectral = render(*context, scene, diffraction::DiffractionMethod::Spectral);
+  const Image orders = render(*context, scene, diffraction::DiffractionMethod::Orders);
+  ASSERT_EQ(orders.pixel_count(), spectral.pixel_count());
+  double peak = 0.0;
+  for (size_t i = 0; i < orders.pixel_count(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(orders.at(i)[c], spectral.at(i)[c]) << i;
+      peak = std::max(peak, static_cast<double>(spectral.at(i)[c]));
+    }
+  }
+  EXPECT_GT(peak, 0.0);
+}
+
 TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine) {
   const Scene scene = load_scene(kPlate);
   const auto prepared = diffraction::prepare_diffraction(std::get<DiffractionMaterial>(scene.materials[0]));
