@@ -13,6 +13,7 @@
 #include "assets/slope_statistics.hpp"
 #include "assets/white_noise.hpp"
 #include "common/error.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet::assets {
 namespace {
@@ -208,8 +209,7 @@ TEST(GaussianHeightfield, SameSeedSameBytesOtherSeedOtherField) {
   for (std::size_t k = 0; k < a.values.size(); ++k) equal += a.values[k] == c.values[k];
   EXPECT_EQ(equal, 0);
 
-  auto dir = std::filesystem::temp_directory_path() / ("facet_assets_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::TempDir dir;
   p.seed -= 1;
   write_scalar_field_exr(dir / "a.exr", a, heightfield_metadata(p, a));
   write_scalar_field_exr(dir / "b.exr", generate_gaussian_heightfield(p), heightfield_metadata(p, b));
@@ -220,7 +220,6 @@ TEST(GaussianHeightfield, SameSeedSameBytesOtherSeedOtherField) {
   EXPECT_EQ(bytes(dir / "a.exr"), bytes(dir / "b.exr"));
   ExrMetadata metadata;
   ScalarField back = read_scalar_field_exr(dir / "a.exr", &metadata);
-  std::filesystem::remove_all(dir);
   ASSERT_EQ(back.width, 128);
   ASSERT_EQ(back.height, 96);
   for (std::size_t k = 0; k < a.values.size(); ++k)  // float32 in the file: exact float rounding

@@ -9,6 +9,7 @@
 
 #include "image/exr_io.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -18,15 +19,9 @@ const std::string kFacet = FACET_EXECUTABLE;
 
 class MakeCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("facet_make_" + std::to_string(::getpid()) +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   test::CommandResult facet(const std::string& args) { return test::run_command(kFacet + " " + args); }
   std::string out(const std::string& name) { return (dir_ / name).string(); }
-  fs::path dir_;
+  test::TempDir dir_;
 };
 
 std::vector<char> bytes(const fs::path& path) {

@@ -10,7 +10,7 @@
 #include "batch/items.hpp"
 #include "batch/job.hpp"
 #include "common/error.hpp"
-#include "image/temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet::batch {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "batch/manifest.hpp"
 #include "common/error.hpp"
-#include "image/temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet::batch {
 namespace {

@@ -7,6 +7,7 @@
 
 #include "image/exr_io.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -19,13 +20,6 @@ const fs::path kScenes = fs::path(FACET_SOURCE_DIR) / "scenes";
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("facet_cli_" + std::string(
-        ::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   fs::path write(const std::string& name, const std::string& text) {
     std::ofstream(dir_ / name) << text;
     return dir_ / name;
@@ -38,7 +32,7 @@ class Cli : public ::testing::Test {
     EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
   }
-  fs::path dir_;
+  test::TempDir dir_;
 };
 
 TEST_F(Cli, RendersTheDefaultSceneToExrAndPng) {

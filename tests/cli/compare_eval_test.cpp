@@ -7,6 +7,7 @@
 
 #include "image/exr_io.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -25,19 +26,11 @@ std::vector<nlohmann::json> parse_lines(const std::string& text) {
 
 class CompareCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    // One folder per test: ctest runs the tests of this file in parallel processes.
-    dir_ = fs::temp_directory_path() /
-           ("facet_compare_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   fs::path write(const std::string& name, const Image& image) {
     write_exr(dir_ / name, image, {}, ExrPixelType::Float);
     return dir_ / name;
   }
-  fs::path dir_;
+  test::TempDir dir_;
 };
 
 // A constant offset of 0.25 on every channel: RMSE = max_abs = 0.25 and PSNR = 10 log10(1/0.0625)

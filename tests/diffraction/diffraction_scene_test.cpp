@@ -6,7 +6,7 @@
 #include <variant>
 
 #include "common/error.hpp"
-#include "image/temp_dir.hpp"
+#include "support/temp_dir.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace facet {

@@ -14,7 +14,7 @@
 
 #include "common/error.hpp"
 #include "support/run_command.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {

@@ -13,7 +13,7 @@
 #include "image/colormap.hpp"
 #include "image/png_io.hpp"
 #include "image/srgb.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {

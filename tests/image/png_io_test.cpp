@@ -13,7 +13,7 @@
 #include "image/exr_io.hpp"
 #include "image/srgb.hpp"
 #include "support/run_command.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {

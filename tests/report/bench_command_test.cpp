@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "image/temp_dir.hpp"
+#include "support/temp_dir.hpp"
 #include "support/run_command.hpp"
 
 namespace facet {

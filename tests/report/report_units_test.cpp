@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "image/temp_dir.hpp"
+#include "support/temp_dir.hpp"
 #include "report/content_hash.hpp"
 #include "report/headline.hpp"
 #include "report/method_catalogue.hpp"

@@ -12,7 +12,7 @@ namespace facet::test {
 class TempDir {
  public:
   TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "facet-image-test-XXXXXX").string();
+    std::string pattern = (std::filesystem::temp_directory_path() / "facet-test-XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
     path_ = pattern;
   }
