@@ -5,24 +5,11 @@
 
 #include "cpu/direct_cpu.hpp"
 #include "gpu/direct_pass.hpp"
-#include "lambert_spheres_scene.hpp"
+#include "lambert_scenes.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
 namespace {
-
-// A square pyramid (4 sides + base, 6 triangles) with flat shading.
-Mesh pyramid(glm::dvec3 base_centre, double half_size, double height) {
-  Mesh mesh;
-  mesh.name = "pyramid";
-  const glm::dvec3 c = base_centre;
-  mesh.positions = {c + glm::dvec3(-half_size, 0, -half_size), c + glm::dvec3(half_size, 0, -half_size),
-                    c + glm::dvec3(half_size, 0, half_size), c + glm::dvec3(-half_size, 0, half_size),
-                    c + glm::dvec3(0, height, 0)};
-  mesh.indices = {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4, 0, 2, 1, 0, 3, 2};
-  mesh.material = 1;
-  return mesh;
-}
 
 struct Agreement {
   double within_fraction;  // pixels whose channels all agree within the tolerance
@@ -65,8 +52,8 @@ TEST(DirectPass, GpuBvhMatchesEmbreeOnMeshes) {
   auto context = test::make_validated_context();
   Scene scene = test::lambert_spheres_scene();
   scene.spheres.clear();
-  scene.meshes.push_back(pyramid({0.0, 0.0, 0.0}, 0.8, 1.4));
-  scene.meshes.push_back(pyramid({1.4, 0.0, 1.0}, 0.4, 0.6));
+  scene.meshes.push_back(test::pyramid({0.0, 0.0, 0.0}, 0.8, 1.4));
+  scene.meshes.push_back(test::pyramid({1.4, 0.0, 1.0}, 0.4, 0.6));
   Image gpu = gpu::render_direct(*context, scene, 96, 64);
   Image cpu = cpu::render_direct_cpu(scene, 96, 64);
   Agreement a = compare(gpu, cpu, kTolerance);

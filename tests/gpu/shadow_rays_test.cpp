@@ -10,6 +10,7 @@
 
 #include "cpu/direct_cpu.hpp"
 #include "gpu/direct_pass.hpp"
+#include "lambert_scenes.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -59,18 +60,6 @@ Scene lit_scene() {
   return scene;
 }
 
-// A square pyramid (4 sides + base) with flat shading.
-Mesh pyramid(glm::dvec3 c, double half_size, double height) {
-  Mesh mesh;
-  mesh.name = "pyramid";
-  mesh.positions = {c + glm::dvec3(-half_size, 0, -half_size), c + glm::dvec3(half_size, 0, -half_size),
-                    c + glm::dvec3(half_size, 0, half_size), c + glm::dvec3(-half_size, 0, half_size),
-                    c + glm::dvec3(0, height, 0)};
-  mesh.indices = {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4, 0, 2, 1, 0, 3, 2};
-  mesh.material = 1;
-  return mesh;
-}
-
 TEST(ShadowRays, PlaneAloneIsLitFromAboveAndDarkFromBelow) {
   Scene scene = lit_scene();
   scene.planes.push_back({{0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0});
@@ -90,7 +79,7 @@ TEST(ShadowRays, FinitePlanesAndMeshesShadowSpheresAndPlanes) {
   Plane roof{{-0.8, 1.6, 0.2}, glm::normalize(glm::dvec3(0.2, 1.0, 0.1)), 1};  // over the left sphere
   roof.size = glm::dvec2(1.2, 1.0);
   scene.planes.push_back(roof);
-  scene.meshes.push_back(pyramid({1.0, 1.15, 0.3}, 0.4, 0.5));  // floating above the right sphere
+  scene.meshes.push_back(test::pyramid({1.0, 1.15, 0.3}, 0.4, 0.5));  // floating above the right sphere
   // The roof and the pyramid cover ~2% of the frame; with their shadows on the spheres and the
   // ground the frame changes on more than 4%.
   EXPECT_GT(changed_fraction(scene, open), 0.04);

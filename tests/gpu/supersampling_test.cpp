@@ -10,7 +10,7 @@
 
 #include "diffraction/diffraction_cases.hpp"
 #include "gpu/direct_pass.hpp"
-#include "lambert_spheres_scene.hpp"
+#include "lambert_scenes.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
