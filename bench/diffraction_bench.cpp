@@ -4,19 +4,14 @@
 // against the wavelength count and N, with each setting's error against the exact transform.
 #include <benchmark/benchmark.h>
 
-#include <map>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "cpu/direct_cpu.hpp"
 #include "diffraction/diffraction_gpu.hpp"
 #include "diffraction/grating.hpp"
 #include "diffraction/spectral_tables.hpp"
-#include "gpu/direct_pass.hpp"
-#include "image/flip.hpp"
-#include "image/metrics.hpp"
-#include "scene/scene_loader.hpp"
+#include "diffraction_frames.hpp"
 #include "vk/context.hpp"
 
 namespace {
@@ -86,54 +81,14 @@ void BM_GpuEval(benchmark::State& state) {
 }
 BENCHMARK(BM_GpuEval)->Arg(4)->Arg(8)->Arg(16)->Arg(32)->UseManualTime()->Unit(benchmark::kMillisecond);
 
-facet::vk::Context& render_context() {
-  static facet::vk::Context context{facet::vk::ContextOptions{}};
-  return context;
-}
-
-const facet::Scene& diffraction_scene(int index) {
-  static const facet::Scene scenes[] = {
-      facet::load_scene(FACET_SOURCE_DIR "/scenes/diffraction_plate.json"),
-      facet::load_scene(FACET_SOURCE_DIR "/scenes/snake_fingers.json")};
-  return scenes[index];
-}
-
-// The error measure: the same rays (pixel centres, 128 x 128) shaded in double with the exact
-// transform (Chebyshev-interpolated exact bins, error < 1e-12) at 0.25 nm wavelength spacing, so
-// only the GPU's Taylor truncation, wavelength sampling and float rounding remain.
-constexpr int kErrorSide = 128;
-const facet::Image& exact_image(int index) {
-  static std::map<int, facet::Image> cache;
-  auto it = cache.find(index);
-  if (it == cache.end()) {
-    facet::diffraction::DiffractionSettings fine;
-    fine.wavelengths = 1881;
-    it = cache.emplace(index, facet::cpu::render_direct_cpu(diffraction_scene(index), kErrorSide, kErrorSide, fine,
-                                                            facet::cpu::DiffractionShading::Transform::Exact))
-             .first;
-  }
-  return it->second;
-}
-
 // range(0): scene (0 plate, 1 snake), range(1): wavelengths, range(2): Taylor terms (0: from the
 // scene's tolerance). Manual time = the GPU timestamps of one 512 x 512 frame.
 void BM_RenderFrame(benchmark::State& state) {
-  const facet::Scene& scene = diffraction_scene(static_cast<int>(state.range(0)));
+  const facet::Scene& scene = facet::bench::diffraction_scene(static_cast<int>(state.range(0)));
   facet::gpu::RenderMethod method;
   method.diffraction.wavelengths = static_cast<int>(state.range(1));
   method.diffraction.taylor = static_cast<int>(state.range(2));
-  facet::gpu::DirectPass pass(render_context(), scene, method);
-  pass.render(scene.camera, 64, 64);  // JIT warm-up
-  for (auto _ : state) {
-    facet::gpu::RenderStats stats;
-    benchmark::DoNotOptimize(pass.render(scene.camera, 512, 512, &stats));
-    state.SetIterationTime(stats.gpu_ms * 1e-3);
-  }
-  const facet::Image test = pass.render(scene.camera, kErrorSide, kErrorSide);
-  const facet::Image& exact = exact_image(static_cast<int>(state.range(0)));
-  state.counters["rmse"] = facet::rmse(test, exact);
-  state.counters["max_abs"] = facet::max_abs_error(test, exact);
-  state.counters["flip"] = facet::flip(test, exact);
+  facet::bench::measure_diffraction_frame(state, static_cast<int>(state.range(0)), method);
   const auto prepared = facet::diffraction::prepare_scene_diffraction(scene, method.diffraction);
   for (const auto& p : prepared)
     if (p) {

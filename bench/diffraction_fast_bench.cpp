@@ -12,18 +12,14 @@
 
 #include <tbb/parallel_for.h>
 
-#include "cpu/direct_cpu.hpp"
 #include "diffraction/cie_tables.hpp"
 #include "diffraction/diffraction_gpu.hpp"
 #include "diffraction/exact_transform.hpp"
 #include "diffraction/order_wavelengths.hpp"
 #include "diffraction/preintegrated_tables.hpp"
-#include "gpu/direct_pass.hpp"
-#include "image/flip.hpp"
-#include "image/metrics.hpp"
+#include "diffraction_frames.hpp"
 #include "orders_probe.hpp"
 #include "preintegrated_probe.hpp"
-#include "scene/scene_loader.hpp"
 
 namespace {
 
@@ -195,47 +191,14 @@ void BM_FrameOrders(benchmark::State& state) {
   state.counters["restricted"] = plan.restricted;
 }
 
-// Whole frames of the diffraction scenes (issue 11): 512 x 512 on lavapipe (manual time = the GPU
-// timestamps of the render pass) and the error of the same method at 128 x 128 against the same
-// pixel-centre rays shaded in double with the exact transform at 0.25 nm (cpu::render_direct_cpu),
-// as in diffraction_bench's BM_RenderFrame. range(0): scene (0 plate, 1 snake), range(1): method
+// Whole frames of the diffraction scenes (issue 11), timed and measured as diffraction_bench's
+// BM_RenderFrame (diffraction_frames.hpp). range(0): scene (0 plate, 1 snake), range(1): method
 // (0 spectral, 1 preintegrated, 2 orders), range(2): wavelengths (0: the tolerance's).
-const facet::Scene& frame_scene(int index) {
-  static const facet::Scene scenes[] = {facet::load_scene(FACET_SOURCE_DIR "/scenes/diffraction_plate.json"),
-                                        facet::load_scene(FACET_SOURCE_DIR "/scenes/snake_fingers.json")};
-  return scenes[index];
-}
-
-constexpr int kErrorSide = 128;
-const facet::Image& exact_frame(int index) {
-  static std::map<int, facet::Image> cache;
-  if (!cache.count(index)) {
-    DiffractionSettings fine;
-    fine.wavelengths = 1881;
-    cache[index] = facet::cpu::render_direct_cpu(frame_scene(index), kErrorSide, kErrorSide, fine,
-                                                 facet::cpu::DiffractionShading::Transform::Exact);
-  }
-  return cache[index];
-}
-
 void BM_RenderScene(benchmark::State& state) {
-  static facet::vk::Context context{facet::vk::ContextOptions{}};
-  const facet::Scene& scene = frame_scene(static_cast<int>(state.range(0)));
   facet::gpu::RenderMethod method;
   method.diffraction.method = static_cast<DiffractionMethod>(state.range(1));
   method.diffraction.wavelengths = static_cast<int>(state.range(2));
-  facet::gpu::DirectPass pass(context, scene, method);
-  pass.render(scene.camera, 64, 64);  // JIT warm-up
-  for (auto _ : state) {
-    facet::gpu::RenderStats stats;
-    benchmark::DoNotOptimize(pass.render(scene.camera, 512, 512, &stats));
-    state.SetIterationTime(stats.gpu_ms * 1e-3);
-  }
-  const facet::Image test = pass.render(scene.camera, kErrorSide, kErrorSide);
-  const facet::Image& exact = exact_frame(static_cast<int>(state.range(0)));
-  state.counters["rmse"] = facet::rmse(test, exact);
-  state.counters["max_abs"] = facet::max_abs_error(test, exact);
-  state.counters["flip"] = facet::flip(test, exact);
+  facet::bench::measure_diffraction_frame(state, static_cast<int>(state.range(0)), method);
 }
 BENCHMARK(BM_RenderScene)
     ->ArgsProduct({{0, 1}, {0}, {0, 32, 64, 72, 80, 96}})
