@@ -19,6 +19,6 @@ void main() {
   uint i = range.offset_count.x + gl_GlobalInvocationID.x;
   if (i >= range.offset_count.y) return;
   EvalRecord rec = records_in[i];
-  DiffractionValue v = diffraction_taylor_value(info, 0u, rec.a.xyz, rec.b.xyz, rec.a.w);
+  DiffractionValue v = diffraction_taylor_value(info, 0u, rec.a.xyz, rec.b.xyz, rec.a.w, ivec2(1, 1));
   records_out[i] = EvalRecord(vec4(v.brdf, v.P2, 0.0, 0.0), vec4(0.0));
 }

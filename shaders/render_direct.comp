@@ -81,14 +81,24 @@ vec3 radiance(vec2 film, float pixel_step) {
   return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb) + diffracted;
 }
 
+// The tile position of this invocation: its workgroup renders block g s mod n (g: the workgroup's
+// index in the dispatch), so each lavapipe thread's contiguous share of the workgroups is spread
+// over the whole tile (renderer/gpu/workgroup_order.hpp).
+uvec2 tile_position() {
+  uint g = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  uint block = (g * tile.spread.y) % tile.spread.x;
+  return uvec2(block % gl_NumWorkGroups.x, block / gl_NumWorkGroups.x) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy;
+}
+
 void main() {
-  uvec2 pixel = gl_GlobalInvocationID.xy + tile.rect.xy;
-  if (gl_GlobalInvocationID.x >= tile.rect.z || gl_GlobalInvocationID.y >= tile.rect.w) return;
+  uvec2 at = tile_position();
+  uvec2 pixel = at + tile.rect.xy;
+  if (at.x >= tile.rect.z || at.y >= tile.rect.w) return;
   float step = 1.0 / float(kSamplesPerAxis);
   vec3 sample_radiance = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
   // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
   // end: the same float operations as averaging them within one invocation.
-  uint i = gl_GlobalInvocationID.y * tile.rect.z + gl_GlobalInvocationID.x;
+  uint i = at.y * tile.rect.z + at.x;
   vec3 sum = tile.stratum.z != 0u ? pixels[i].rgb + sample_radiance : sample_radiance;
   pixels[i] = vec4(tile.stratum.w != 0u ? sum / float(kSamplesPerAxis * kSamplesPerAxis) : sum, 1.0);
 }

@@ -16,19 +16,18 @@ DiffractionGeometry geometry(const SpectralTables& t, const DiffractionQuery& q)
   return diffraction_geometry(q.wi, q.wr, q.lambda_nm, t.sigma_nm, t.hs_nm);
 }
 
-// Sums the window-weighted Taylor states of the bins within r of the nearest bin.
-DiffractionField window_sum(const SpectralTables& t, const DiffractionGeometry& g,
+// Sums the window-weighted Taylor states of the window's bins (every `stride`-th, per axis).
+DiffractionField window_sum(const SpectralTables& t, const DiffractionGeometry& g, glm::ivec2 stride,
                             const std::function<DiffractionTaylor(int, int)>& bin_taylor) {
-  const int jx0 = diffraction_nearest_bin(g.alpha.x, t.period_nm);
-  const int jy0 = diffraction_nearest_bin(g.alpha.y, t.period_nm);
+  const DiffractionWindowBins bins = diffraction_window_bins(g.alpha, t.period_nm, t.r, stride);
   DiffractionField field{real2(0.0), real2(0.0)};
-  for (int jy = jy0 - t.r; jy <= jy0 + t.r; ++jy)
-    for (int jx = jx0 - t.r; jx <= jx0 + t.r; ++jx) {
-      if (!diffraction_table_entry(0, jx, jy, t.J, 1).valid) continue;
-      const double weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(jx, jy, t.period_nm),
-                                                      t.sigma_nm);
-      field = diffraction_field_add(field, weight, bin_taylor(jx, jy));
-    }
+  for (int b = 0; b < bins.count.x * bins.count.y; ++b) {
+    const glm::ivec2 j = diffraction_window_bin(bins, b);
+    if (!diffraction_table_entry(0, j.x, j.y, t.J, 1).valid) continue;
+    const double weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(j.x, j.y, t.period_nm),
+                                                    t.sigma_nm);
+    field = diffraction_field_add(field, weight, bin_taylor(j.x, j.y));
+  }
   return field;
 }
 
@@ -48,14 +47,14 @@ void validate_query(const DiffractionQuery& q) {
   if (!(std::isfinite(q.lambda_nm) && q.lambda_nm > 0.0)) throw Error("lambda_nm must be a positive number");
 }
 
-DiffractionResult evaluate_taylor(const SpectralTables& t, const DiffractionQuery& q) {
+DiffractionResult evaluate_taylor(const SpectralTables& t, const DiffractionQuery& q, glm::ivec2 bin_stride) {
   const DiffractionGeometry g = geometry(t, q);
   auto coefficient = [&](int n, int jx, int jy) {
     const DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, t.J, t.stored_terms);
     const std::complex<double> c = e.conjugate ? std::conj(t.coefficients[e.index]) : t.coefficients[e.index];
     return real2(c.real(), c.imag());
   };
-  return result(t, g, window_sum(t, g, [&](int jx, int jy) {
+  return result(t, g, window_sum(t, g, bin_stride, [&](int jx, int jy) {
                   DiffractionTaylor taylor = diffraction_taylor_start(g, coefficient(0, jx, jy));
                   for (int n = 1; n < t.N; ++n) taylor = diffraction_taylor_step(taylor, g, coefficient(n, jx, jy));
                   return taylor;
@@ -69,7 +68,7 @@ DiffractionResult evaluate_from_bins(const SpectralTables& t, const DiffractionQ
   const DiffractionGeometry g = geometry(t, q);
   const double w = exact_phase_w(q);
   // Split P(j) = H_0(j) + w rest(j) as the Taylor path does; H_0 is 1 at bin 0 and 0 elsewhere.
-  return result(t, g, window_sum(t, g, [&](int jx, int jy) {
+  return result(t, g, window_sum(t, g, glm::ivec2(1, 1), [&](int jx, int jy) {
                   const std::complex<double> flat = (jx == 0 && jy == 0) ? 1.0 : 0.0;
                   const std::complex<double> rest = (bin_coefficient(jx, jy) - flat) / w;
                   return DiffractionTaylor(real2(flat.real(), 0.0), real2(rest.real(), rest.imag()), real2(0.0),

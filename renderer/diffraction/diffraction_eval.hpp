@@ -27,8 +27,10 @@ struct DiffractionResult {
 // lambda lies in (0, inf).
 void validate_query(const DiffractionQuery& q);
 
-// The Taylor sum over the tables (shaders/lib/diffraction_brdf.glsl in double).
-DiffractionResult evaluate_taylor(const SpectralTables& tables, const DiffractionQuery& q);
+// The Taylor sum over the tables (shaders/lib/diffraction_brdf.glsl in double). bin_stride (1, 1):
+// every bin of the window; a periodic patch's repeats: only its lattice (diffraction_window_bins).
+DiffractionResult evaluate_taylor(const SpectralTables& tables, const DiffractionQuery& q,
+                                  glm::ivec2 bin_stride = glm::ivec2(1, 1));
 
 // w = -(cos theta_i + cos theta_r), kept 1e-9 away from 0 so that (P - H_0) / w of the exact
 // path stays defined when both directions graze (there P - H_0 = O(w) and the quotient tends to its limit).

@@ -47,6 +47,18 @@ double expected_nodes(const DiffractionOrderLattice& L) {
   return overlap * (kCieLambdaMaxNm - kCieLambdaMinNm) / L.max_step;
 }
 
+// F.13: order j's interval spans len_j <= 2 rho / |uv| in k, i.e. lambda_lo lambda_hi rho / (pi |uv|) in
+// wavelength, with the smaller of two steps: the peak's, peak_step lambda_lo^2 / (2 pi sqrt2 sigma |uv|),
+// and max_step. So nodes_j <= len_j / step_j + 1 <= 2 sqrt2 rho sigma (lambda_max / lambda_min) / peak_step
+// + len_j / max_step + 1. A wavelength lies in the intervals of at most O orders (the lattice points
+// within rho of one point: O <= prod (floor(2 rho / f) + 1)), so sum_j len_j <= O (lambda_max -
+// lambda_min), and over the F.10 candidates C: nodes <= C (peak bound + 1) + O range / max_step.
+double most_nodes(const DiffractionOrderLattice& L, double candidates) {
+  const double per_peak = 2.0 * std::sqrt(2.0) * L.reach * L.sigma_nm * (kCieLambdaMaxNm / kCieLambdaMinNm) / L.peak_step;
+  const glm::dvec2 overlap = glm::floor(2.0 * L.reach / L.frequency) + 1.0;
+  return std::ceil(candidates) * (per_peak + 1.0) + overlap.x * overlap.y * (kCieLambdaMaxNm - kCieLambdaMinNm) / L.max_step;
+}
+
 }  // namespace
 
 PatchRepeats patch_repeats(const Grating& grating) { return {repeats_along(grating, 1, 0), repeats_along(grating, 0, 1)}; }
@@ -57,7 +69,8 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
   OrderWavelengths plan;
   const PatchRepeats repeats = patch_repeats(grating);
   DiffractionOrderLattice& L = plan.lattice;
-  L.frequency = kTwoPi * glm::dvec2(repeats.x, repeats.y) / tables.period_nm;
+  L.repeats = glm::ivec2(repeats.x, repeats.y);
+  L.frequency = kTwoPi * glm::dvec2(L.repeats) / tables.period_nm;
   L.sigma_nm = tables.sigma_nm;
   L.reach = std::sqrt(2.0 * std::log(1.0 / tolerance)) / tables.sigma_nm;
   L.k_min = kTwoPi / kCieLambdaMaxNm;
@@ -69,6 +82,7 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
   L.max_step = 0.5 * observer_spacing(tolerance, light);
   plan.worst_orders = worst_orders(L);
   plan.expected_nodes = expected_nodes(L);
+  plan.most_nodes = most_nodes(L, plan.worst_orders);
   plan.restricted = plan.worst_orders <= kMaxOrdersPerPixel &&
                     plan.expected_nodes < static_cast<double>(fallback.lambda_nm.size());
   plan.lambda0_nm = kCieLambdaMinNm;
@@ -80,9 +94,10 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
 
 glm::dvec3 evaluate_orders(const SpectralTables& tables, const OrderWavelengths& plan, const glm::dvec3& wi,
                            const glm::dvec3& wr) {
-  auto brdf = [&](double lambda) { return evaluate_taylor(tables, {wi, wr, lambda}).brdf; };
-  if (!plan.restricted) return integrate_linear_srgb(plan.fallback, brdf);
+  if (!plan.restricted)  // the spectral path, as the shader runs it
+    return integrate_linear_srgb(plan.fallback, [&](double l) { return evaluate_taylor(tables, {wi, wr, l}).brdf; });
   const DiffractionOrderLattice& L = plan.lattice;
+  auto brdf = [&](double lambda) { return evaluate_taylor(tables, {wi, wr, lambda}, L.repeats).brdf; };
   const glm::dvec2 uv = -glm::dvec2(wi.x + wr.x, wi.y + wr.y);
   const DiffractionOrderSpan span = diffraction_order_span(L, uv);
   const int entries = static_cast<int>(plan.observer.size());

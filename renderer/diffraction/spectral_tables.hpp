@@ -17,7 +17,7 @@ using glm::uvec4;
 using glm::vec4;
 #include "layout/diffraction_layout.glsl"
 static_assert(sizeof(DiffractionTableInfo) == 32);
-static_assert(sizeof(GpuDiffractionMaterial) == 160);
+static_assert(sizeof(GpuDiffractionMaterial) == 176);
 
 // What the tables must cover, and how accurately.
 struct TableRange {

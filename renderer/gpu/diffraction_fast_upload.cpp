@@ -7,6 +7,7 @@
 #include "diffraction/order_wavelengths.hpp"
 #include "diffraction/preintegrated_tables.hpp"
 #include "gpu/diffraction_domain.hpp"
+#include "gpu/diffraction_upload.hpp"
 
 namespace facet::gpu {
 
@@ -56,9 +57,15 @@ void append_fast_paths(FastPathData& data, diffraction::GpuDiffractionMaterial& 
     const diffraction::OrderWavelengths plan = diffraction::plan_order_wavelengths(
         *source.grating, prepared.tables, source.tolerance, source.illuminant, prepared.samples);
     if (!plan.restricted) return;  // fast_scalars.z = 0: the pass runs the spectral path
+    const long iterations = order_loop_iterations(plan, prepared.tables);
+    if (iterations + kTraceLoopReserve > kLoopIterationLimit)
+      throw Error("diffraction material '" + scene.material_names[scene_material] + "': the orders path may need " +
+                  std::to_string(iterations) + " shader loop iterations per ray; lavapipe ends a pixel's loops after " +
+                  std::to_string(kLoopIterationLimit) + ": use --diffraction spectral or preintegrated, or a larger tolerance");
     const auto& L = plan.lattice;
     material.order_lattice0 = glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach);
     material.order_lattice1 = glm::vec4(L.k_min, L.k_max, L.peak_step, L.max_step);
+    material.order_repeats = glm::ivec4(L.repeats, 0, 0);
     material.fast_offsets.z = static_cast<std::uint32_t>(data.observer.size());
     material.fast_offsets.w = static_cast<std::uint32_t>(plan.observer.size());
     material.fast_scalars.y = static_cast<float>(plan.lambda0_nm);

@@ -1,6 +1,7 @@
 #include "gpu/diffraction_upload.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <string>
 
@@ -16,6 +17,16 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
   const long bins = (2L * prepared.tables.r + 1) * (2L * prepared.tables.r + 1);
   const long taylor = (prepared.tables.N - 1 + 7) / 8;
   return static_cast<long>(prepared.samples.lambda_nm.size()) * (1 + bins * (1 + taylor));
+}
+
+long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables) {
+  const auto& L = plan.lattice;
+  const glm::dvec2 radius = glm::floor(glm::dvec2(L.reach) / L.frequency + 0.5);  // diffraction_order_share's
+  const long share = static_cast<long>((2 * radius.y + 1) * (2 * radius.x + 2));   // rows, each with its columns
+  const glm::ivec2 bins = 2 * tables.r / L.repeats + 1;                             // lattice bins per axis, at most
+  const long taylor = (tables.N - 1 + 7) / 8;
+  const long per_node = 2 + share + static_cast<long>(bins.x) * bins.y * (1 + taylor);
+  return static_cast<long>(std::ceil(plan.worst_orders) + std::ceil(plan.most_nodes) * per_node);
 }
 
 DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,

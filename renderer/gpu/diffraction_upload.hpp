@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "diffraction/order_wavelengths.hpp"
 #include "diffraction/prepared_diffraction.hpp"
 #include "scene/scene.hpp"
 #include "vk/buffer.hpp"
@@ -35,6 +36,12 @@ struct DiffractionBuffers {
 constexpr int kLoopIterationLimit = 65535;
 constexpr int kTraceLoopReserve = 4096;
 long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepared);
+
+// The same bound for the `orders` walk (render/diffraction_orders.glsl) of a restricted plan: the
+// candidates' first pass, then per node (at most F.13's, over F.10's candidates) the
+// walk and its advance, the share's loops over the orders within reach, and the lattice bins'
+// Taylor sums (docs/diffraction_fast_paths.md, "Loop limit").
+long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables);
 
 // Diffraction material i of the scene (counting only diffraction materials, in scene order) is
 // entry i of `materials`: the index scene_upload puts in GpuMaterial::kind.y. Throws facet::Error

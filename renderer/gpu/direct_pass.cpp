@@ -1,10 +1,12 @@
 #include "gpu/direct_pass.hpp"
 
 #include <algorithm>
+#include <string>
 #include <variant>
 #include <vector>
 
 #include "common/error.hpp"
+#include "gpu/workgroup_order.hpp"
 #include "render_direct.spv.h"
 
 namespace facet::gpu {
@@ -26,7 +28,8 @@ int tile_count(int width, int height, int tile_size) {
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size)
     : scene_(&scene),
-      tile_size_(tile_size > 0 ? tile_size : throw Error("tile size must be positive")),
+      tile_size_(tile_size > 0 && tile_size <= kMaxTileSize ? tile_size
+                                                             : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
       samples_per_axis_(method.samples_per_axis),
       buffers_(upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable)),
       diffraction_(upload_diffraction(context, scene, method.diffraction)),
@@ -64,9 +67,11 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
     for (int x0 = 0; x0 < width; x0 += tile_size_) {
       const int w = std::min(tile_size_, width - x0), h = std::min(tile_size_, height - y0);
       glm::uvec3 groups((w + kWorkgroup - 1) / kWorkgroup, (h + kWorkgroup - 1) / kWorkgroup, 1);
+      const uint32_t blocks = groups.x * groups.y;
+      const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
       const int k = samples_per_axis_, strata = k * k;
       for (int s = 0; s < strata; ++s) {  // ss:K: one stratum per dispatch, accumulated in pixels_
-        GpuTile tile{uvec4(x0, y0, w, h), uvec4(s % k, s / k, s > 0 ? 1 : 0, s == strata - 1 ? 1 : 0)};
+        GpuTile tile{uvec4(x0, y0, w, h), uvec4(s % k, s / k, s > 0 ? 1 : 0, s == strata - 1 ? 1 : 0), spread};
         local.gpu_ms += kernel_.dispatch(bindings, &tile, groups);
       }
       pixels_.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);

@@ -21,6 +21,7 @@ struct RenderStats {
 };
 
 constexpr int kDefaultTileSize = 256;
+constexpr int kMaxTileSize = 2040;  // (2040 / 8)^2 workgroups: within gpu::kMaxTileBlocks
 
 // How many tiles (= submissions) an image of width x height is split into.
 int tile_count(int width, int height, int tile_size = kDefaultTileSize);

@@ -87,6 +87,7 @@ struct GpuColormap {
 struct GpuTile {
   uvec4 rect;     // x0, y0, width, height
   uvec4 stratum;  // sx, sy in [0, K); z: 1 adds to the tile's pixels (not the first stratum); w: 1 scales by 1/K^2 (the last)
+  uvec4 spread;   // x: the tile's workgroups n, y: s, coprime to n: workgroup g renders block g s mod n (gpu/workgroup_order.hpp)
 };
 
 #endif

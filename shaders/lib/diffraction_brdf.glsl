@@ -47,6 +47,30 @@ inline int diffraction_nearest_bin(real alpha, real period_nm) {
   return int(floor(alpha * period_nm / (real(2) * FACET_PI) + real(0.5)));
 }
 
+// The DFT bins the window sum visits around the frequency alpha: those within r bins (per axis) of
+// the nearest one that are multiples of `stride`, row by row (j_y outer). Stride 1 is every bin (the
+// spectral path). A patch that repeats P_x, P_y times along x, y has non-zero coefficients only at
+// multiples of (P_x, P_y), its lattice of orders, so a stride of (P_x, P_y) skips exactly the bins
+// whose coefficients vanish (the orders path; docs/diffraction_fast_paths.md, F.12).
+struct DiffractionWindowBins {
+  ivec2 first;
+  ivec2 count;  // bins per axis (0: none)
+  ivec2 stride;
+};
+
+inline DiffractionWindowBins diffraction_window_bins(real2 alpha, real period_nm, int r, ivec2 stride) {
+  ivec2 nearest = ivec2(diffraction_nearest_bin(alpha.x, period_nm), diffraction_nearest_bin(alpha.y, period_nm));
+  real2 s = real2(stride);
+  ivec2 lo = ivec2(ceil(real2(nearest - ivec2(r, r)) / s));  // in units of the stride: exact for these small integers
+  ivec2 hi = ivec2(floor(real2(nearest + ivec2(r, r)) / s));
+  return DiffractionWindowBins(lo * stride, max(hi - lo + ivec2(1, 1), ivec2(0, 0)), stride);
+}
+
+// The b-th bin, b < count.x * count.y.
+inline ivec2 diffraction_window_bin(DiffractionWindowBins w, int b) {
+  return w.first + ivec2(b % w.count.x, b / w.count.x) * w.stride;
+}
+
 // Fourier transform of the Gaussian window exp(-|x|^2 / (2 sigma^2)) at frequency offset delta,
 // divided by its peak 2 pi sigma^2 (that factor is applied in diffraction_value).
 inline real diffraction_window_weight(real2 delta, real sigma_nm) {

@@ -19,6 +19,7 @@ struct DiffractionOrderLattice {
   real k_max;
   real peak_step;    // midpoint step of a Gaussian peak in units of its standard deviation (eq. F.9)
   real max_step;     // largest step in wavelength that still resolves the observer and the light [nm]
+  ivec2 repeats;     // (P_x, P_y): the patch holds P periods per axis, so its DFT bins are non-zero only at multiples of P
 };
 
 // The orders j in [lo, hi] (per axis) whose reach can meet the segment k (u, v), k in [k_min, k_max].

@@ -44,7 +44,7 @@ vec3 diffraction_orders_xyz(DiffractionOrderLattice L, DiffractionTableInfo info
     if (!look.valid) continue;
     vec3 observer = mix(diffraction_observer[o.first + uint(look.index)].xyz,
                         diffraction_observer[o.first + uint(look.index) + 1u].xyz, look.f);
-    float brdf = diffraction_taylor_value(info, first_coefficient, wi, wr, lambda).brdf;
+    float brdf = diffraction_taylor_value(info, first_coefficient, wi, wr, lambda, L.repeats).brdf;
     xyz += (brdf * diffraction_order_share(L, uv, lambda, j) * I.step) * observer;
   }
   return xyz;

@@ -33,7 +33,7 @@ vec3 diffraction_spectral_xyz(GpuDiffractionMaterial m, vec3 wi, vec3 wr) {
   vec3 xyz = vec3(0.0);
   for (uint i = m.offsets.y; i < m.offsets.y + m.offsets.z; ++i) {
     vec4 sample_i = diffraction_wavelengths[i];
-    xyz += diffraction_taylor_value(m.table, m.offsets.x, wi, wr, sample_i.x).brdf * sample_i.yzw;
+    xyz += diffraction_taylor_value(m.table, m.offsets.x, wi, wr, sample_i.x, ivec2(1, 1)).brdf * sample_i.yzw;
   }
   return xyz;
 }
@@ -58,7 +58,8 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
       if (m.fast_scalars.z != 0.0) {
         DiffractionOrderLattice lattice = DiffractionOrderLattice(m.order_lattice0.xy, m.order_lattice0.z, m.order_lattice0.w,
                                                                   m.order_lattice1.x, m.order_lattice1.y,
-                                                                  m.order_lattice1.z, m.order_lattice1.w);
+                                                                  m.order_lattice1.z, m.order_lattice1.w,
+                                                                  m.order_repeats.xy);
         OrderObserver observer = OrderObserver(m.fast_offsets.z, int(m.fast_offsets.w), m.fast_scalars.y);
         rgb = spectral_xyz_to_linear_srgb(diffraction_orders_xyz(lattice, m.table, m.offsets.x, observer, d.wi, d.wr));
         break;

@@ -42,21 +42,22 @@ DiffractionTaylor diffraction_taylor_sum(DiffractionTaylor t, DiffractionGeometr
 }
 #undef FACET_DIFFRACTION_GUARDED_STEP
 
-// wi, wr: unit vectors toward the light and the viewer in the grating's frame, z >= 0.
-DiffractionValue diffraction_taylor_value(DiffractionTableInfo info, uint first, vec3 wi, vec3 wr, float lambda_nm) {
-  int J = info.shape.x, r = info.shape.z;
+// wi, wr: unit vectors toward the light and the viewer in the grating's frame, z >= 0. bin_stride:
+// (1, 1) visits every bin of the window; a periodic patch's repeats visit only its lattice
+// (lib/diffraction_brdf.glsl, diffraction_window_bins).
+DiffractionValue diffraction_taylor_value(DiffractionTableInfo info, uint first, vec3 wi, vec3 wr, float lambda_nm,
+                                          ivec2 bin_stride) {
+  int J = info.shape.x;
   float T = info.scales.x, sigma = info.scales.y;
   DiffractionGeometry g = diffraction_geometry(wi, wr, lambda_nm, sigma, info.scales.z);
-  int jx0 = diffraction_nearest_bin(g.alpha.x, T);
-  int jy0 = diffraction_nearest_bin(g.alpha.y, T);
-  int side = 2 * r + 1;
+  DiffractionWindowBins bins = diffraction_window_bins(g.alpha, T, info.shape.z, bin_stride);
   DiffractionField field = DiffractionField(vec2(0.0), vec2(0.0));
-  for (int b = 0; b < side * side; ++b) {
-    int jx = jx0 - r + b % side, jy = jy0 - r + b / side;
-    if (!diffraction_table_entry(0, jx, jy, J, 1).valid) continue;
-    float weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(jx, jy, T), sigma);
-    DiffractionTaylor t = diffraction_taylor_start(g, diffraction_coefficient(info, first, 0, jx, jy));
-    field = diffraction_field_add(field, weight, diffraction_taylor_sum(t, g, info, first, jx, jy));
+  for (int b = 0; b < bins.count.x * bins.count.y; ++b) {
+    ivec2 j = diffraction_window_bin(bins, b);
+    if (!diffraction_table_entry(0, j.x, j.y, J, 1).valid) continue;
+    float weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(j.x, j.y, T), sigma);
+    DiffractionTaylor t = diffraction_taylor_start(g, diffraction_coefficient(info, first, 0, j.x, j.y));
+    field = diffraction_field_add(field, weight, diffraction_taylor_sum(t, g, info, first, j.x, j.y));
   }
   return diffraction_value(g, field, sigma, info.scales.w);
 }

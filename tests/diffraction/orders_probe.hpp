@@ -18,6 +18,7 @@ namespace facet::test {
 struct OrdersProbePush {
   glm::vec4 lattice0;
   glm::vec4 lattice1;
+  glm::ivec4 repeats;
   glm::ivec4 shape;
   glm::vec4 scales;
   float lambda0_nm;
@@ -53,6 +54,7 @@ inline OrdersProbeRun run_orders_probe(vk::Context& context, const diffraction::
   const diffraction::DiffractionTableInfo info = tables.info();
   const OrdersProbePush push{glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach),
                              glm::vec4(L.k_min, L.k_max, L.peak_step, L.max_step),
+                             glm::ivec4(L.repeats, 0, 0),
                              info.shape,
                              info.scales,
                              float(plan.lambda0_nm),

@@ -87,6 +87,71 @@ TEST(Orders, SharesAreAPartitionOfUnity) {
   }
 }
 
+// F.12: a patch that holds P periods has non-zero DFT coefficients only at multiples of P, so the
+// BRDF summed over the window's lattice bins alone (bin_stride = the repeats, as the orders path
+// does) equals the sum over every bin of the window, up to the float-free roundoff of the tables'
+// FFT (1e-9 of the largest value over random views and wavelengths, double). The stride does skip
+// bins: with it the window visits at most ceil((2r + 1) / P) per axis.
+TEST(Orders, LatticeBinsCarryTheWholeWindowSum) {
+  // Besides the three gratings (windows of one bin): scenes/diffraction_plate.json's (r = 2, P = 64
+  // along y: the window's 5 rows shrink to one; along x 12.8 samples per period is no sample
+  // shift, so P = 1) and a window narrow enough for two lattice bins per axis (r = 2, P = 4).
+  const char* plate =
+      R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":100,"size_um":8,"samples":64,"coherence_um":3.2})";
+  const char* narrow =
+      R"({"type":"crossed","period_nm":[500,500],"amplitude_nm":40,"size_um":2,"samples":64,"coherence_um":0.5})";
+  int most_lattice_bins = 0;
+  for (const char* json : {kSinusoid, kRectangular, kCrossed, plate, narrow}) {
+    const Case c = make_case(json);
+    const glm::ivec2 stride = c.plan.lattice.repeats;
+    ASSERT_GT(stride.x * stride.y, 1) << json;
+    const double period_x = 2 * kPi / c.plan.lattice.frequency.x;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> unit(-0.95, 0.95), lambda(360.0, 830.0);
+    std::vector<std::pair<double, double>> values;  // (lattice bins, every bin)
+    double largest = 0.0;
+    for (int q = 0; q < 400; ++q) {
+      const glm::dvec2 i(0.6 * unit(rng), 0.6 * unit(rng));
+      const double l = lambda(rng);
+      // Half the views on the first order at this wavelength (where the values are large), half anywhere.
+      const glm::dvec2 r = q % 2 ? glm::dvec2(unit(rng), unit(rng)) : -glm::dvec2(l / period_x, 0.0) - i;
+      if (glm::dot(r, r) >= 1.0) continue;
+      const DiffractionQuery query{direction(i.x, i.y), direction(r.x, r.y), l};
+      values.emplace_back(evaluate_taylor(c.tables, query, stride).brdf, evaluate_taylor(c.tables, query).brdf);
+      largest = std::max(largest, values.back().second);
+    }
+    ASSERT_GT(largest, 0.0);
+    for (const auto& [lattice, every] : values) EXPECT_NEAR(lattice, every, 1e-9 * largest) << json;
+    for (double a = -0.05; a <= 0.05; a += 1e-4) {  // bins visited per axis: at most 2r / P + 1 of 2r + 1
+      const k64::DiffractionWindowBins bins = k64::diffraction_window_bins(glm::dvec2(a, 0.0), c.tables.period_nm, c.tables.r, stride);
+      EXPECT_LE(bins.count.x, 2 * c.tables.r / stride.x + 1) << json;
+      if (stride.x > 1) most_lattice_bins = std::max(most_lattice_bins, bins.count.x);
+    }
+  }
+  EXPECT_EQ(most_lattice_bins, 2);  // the narrow window's lattice sums add several bins
+}
+
+// The window's bins with a stride are exactly the multiples of the stride among the bins within r
+// of the nearest one (brute force over frequencies, radii and strides, negative bins included).
+TEST(Orders, WindowBinsAreTheStridesMultiplesInTheWindow) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> alpha(-0.05, 0.05);
+  const double period = 4000.0;
+  for (int q = 0; q < 300; ++q) {
+    const glm::dvec2 a(alpha(rng), alpha(rng));
+    const int r = q % 4;
+    const glm::ivec2 stride(1 + q % 5, 1 + (q / 5) % 7);
+    const k64::DiffractionWindowBins bins = k64::diffraction_window_bins(a, period, r, stride);
+    std::vector<glm::ivec2> got, want;
+    for (int b = 0; b < bins.count.x * bins.count.y; ++b) got.push_back(k64::diffraction_window_bin(bins, b));
+    const int jx0 = k64::diffraction_nearest_bin(a.x, period), jy0 = k64::diffraction_nearest_bin(a.y, period);
+    for (int jy = jy0 - r; jy <= jy0 + r; ++jy)
+      for (int jx = jx0 - r; jx <= jx0 + r; ++jx)
+        if (jx % stride.x == 0 && jy % stride.y == 0) want.emplace_back(jx, jy);
+    EXPECT_EQ(got, want) << q;
+  }
+}
+
 // Every wavelength at which order j's window weight reaches the tolerance lies in j's interval
 // (and j in the span), found by a 0.02 nm scan over 360..830 nm; every node of the interval does.
 TEST(Orders, IntervalsHoldEveryReachingWavelength) {
@@ -193,6 +258,34 @@ TEST(Orders, EvaluatesFarFewerWavelengthsThanTheSpectralPath) {
     const double per_pixel = nodes / pixels, spectral_count = static_cast<double>(c.plan.fallback.lambda_nm.size());
     std::printf("%s: %.1f evaluations per pixel against %.0f wavelengths\n", json, per_pixel, spectral_count);
     EXPECT_LT(per_pixel * 3.0, spectral_count) << json;
+  }
+}
+
+// F.13 against brute force: the nodes of every candidate's interval, summed per view, never exceed
+// plan.most_nodes, over views of the whole hemisphere and near the specular direction (where the
+// low orders' intervals are the longest), for lattices with separated and with overlapping orders.
+TEST(Orders, NodesPerPixelStayWithinTheirBound) {
+  const char* plate =
+      R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":100,"size_um":8,"samples":64,"coherence_um":3.2})";
+  const char* fingers = R"({"type":"fingers","period_nm":750,"amplitude_nm":80,"size_um":3,"samples":48,)"
+                        R"("finger_length_nm":1500,"coherence_um":0.75})";
+  for (const char* json : {kSinusoid, kRectangular, kCrossed, plate, fingers}) {
+    const Case c = make_case(json);
+    const k64::DiffractionOrderLattice& L = c.plan.lattice;
+    std::mt19937 rng(14);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    double most = 0.0;
+    for (int q = 0; q < 4000; ++q) {
+      const double scale = q % 2 ? 2.0 : 0.02;  // anywhere, or within 0.02 of specular
+      const glm::dvec2 uv(scale * unit(rng), scale * unit(rng));
+      const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, uv);
+      double nodes = 0.0;
+      for (int i = 0; i < k64::diffraction_order_candidates(span); ++i)
+        nodes += k64::diffraction_order_interval(L, uv, k64::diffraction_order_candidate(span, i)).nodes;
+      EXPECT_LE(nodes, c.plan.most_nodes) << json << " " << uv.x << "," << uv.y;
+      most = std::max(most, nodes);
+    }
+    std::printf("%s: most nodes per view %.0f, bound %.0f\n", json, most, c.plan.most_nodes);
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/error.hpp"
 #include "cpu/direct_cpu.hpp"
 #include "gpu/direct_pass.hpp"
 #include "lambert_scenes.hpp"
@@ -45,6 +46,22 @@ TEST(DirectPass, GpuMatchesCpuOnAnalyticScene) {
   Agreement a = compare(gpu, cpu, kTolerance);
   EXPECT_GE(a.within_fraction, kMinAgreeingFraction);
   EXPECT_LE(a.max_error, kTolerance);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+// Every pixel is rendered once whatever the tile size: tiles of one workgroup, of partial
+// workgroups (20 px), of several permuted workgroups (32 px) and of the whole frame give the same
+// bits (each pixel's arithmetic does not depend on which workgroup renders it).
+TEST(DirectPass, TileSizesRenderTheSameImage) {
+  auto context = test::make_validated_context();
+  Scene scene = test::lambert_spheres_scene();
+  const Image whole = gpu::render_direct(*context, scene, 70, 45, {}, nullptr, {}, 256);
+  for (int tile : {8, 20, 32}) {
+    const Image tiled = gpu::render_direct(*context, scene, 70, 45, {}, nullptr, {}, tile);
+    for (int y = 0; y < 45; ++y)
+      for (int x = 0; x < 70; ++x) ASSERT_EQ(tiled.at(x, y), whole.at(x, y)) << tile << " " << x << "," << y;
+  }
+  EXPECT_THROW(gpu::DirectPass(*context, scene, gpu::RenderMethod{}, gpu::kMaxTileSize + 1), Error);
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 

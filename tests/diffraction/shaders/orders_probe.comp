@@ -10,6 +10,7 @@ layout(std430, binding = 3) readonly buffer Observer { vec4 diffraction_observer
 layout(push_constant) uniform Probe {
   vec4 lattice0;  // frequency (x, y), sigma, reach
   vec4 lattice1;  // k_min, k_max, peak_step, max_step
+  ivec4 repeats;  // the lattice's (P_x, P_y), -, -
   ivec4 shape;    // the tables' DiffractionTableInfo
   vec4 scales;
   float lambda0_nm;
@@ -23,7 +24,8 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= probe.count) return;
   DiffractionOrderLattice L = DiffractionOrderLattice(probe.lattice0.xy, probe.lattice0.z, probe.lattice0.w,
-                                                      probe.lattice1.x, probe.lattice1.y, probe.lattice1.z, probe.lattice1.w);
+                                                      probe.lattice1.x, probe.lattice1.y, probe.lattice1.z, probe.lattice1.w,
+                                                      probe.repeats.xy);
   DiffractionTableInfo info = DiffractionTableInfo(probe.shape, probe.scales);
   vec3 xyz = diffraction_orders_xyz(L, info, 0u, OrderObserver(0u, probe.entries, probe.lambda0_nm),
                                     queries[2u * i].xyz, queries[2u * i + 1u].xyz);
