@@ -7,10 +7,13 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <variant>
 
 #include "common/error.hpp"
+#include "diffraction_cases.hpp"
 #include "gpu/diffraction_fast_upload.hpp"
+#include "gpu/diffraction_upload.hpp"
 #include "gpu/direct_pass.hpp"
 #include "image/exr_io.hpp"
 #include "scene/scene_loader.hpp"
@@ -99,6 +102,33 @@ TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine
     EXPECT_NE(message.find("MiB"), std::string::npos) << message;
   }
   EXPECT_TRUE(data.preintegrated_words.empty());
+}
+
+// F.13: a crossed grating of 2.5 um periods at tolerance 1e-6 with 64 Taylor terms may need more
+// loop iterations per ray under `orders` than lavapipe runs (5 579 nodes x 13 per node), while its
+// spectral loop fits: `orders` is refused in one line that names the material and the way out.
+TEST(DiffractionFastPathsRender, OrdersBeyondTheLoopLimitAreRefusedWithOneLine) {
+  Scene scene = load_scene(kPlate);
+  auto& material = std::get<DiffractionMaterial>(scene.materials[0]);
+  material.grating = std::make_shared<diffraction::Grating>(test::grating(
+      R"({"type":"crossed","period_nm":[2500,2500],"amplitude_nm":60,"size_um":10,"samples":80,"coherence_um":10})"));
+  material.tolerance = 1e-6;
+  diffraction::DiffractionSettings settings;
+  settings.taylor = 64;
+  const auto prepared = diffraction::prepare_diffraction(material, settings);
+  EXPECT_LE(gpu::diffraction_loop_iterations(prepared) + gpu::kTraceLoopReserve, gpu::kLoopIterationLimit);
+  gpu::FastPathData data;
+  diffraction::GpuDiffractionMaterial entry{};
+  try {
+    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Orders, 1u << 30);
+    FAIL() << "orders accepted";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find("'grating'"), std::string::npos) << message;
+    EXPECT_NE(message.find("--diffraction spectral"), std::string::npos) << message;
+  }
+  EXPECT_TRUE(data.observer.empty());
 }
 
 TEST(DiffractionFastPathsRender, MethodStringsRoundTrip) {
