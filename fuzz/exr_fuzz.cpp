@@ -5,13 +5,59 @@
 // another exception escaping) is a bug.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <string>
 
 #include "assets/scalar_field.hpp"
 #include "common/error.hpp"
+#include "fuzz_image_size.hpp"
 #include "fuzz_input_file.hpp"
 #include "image/exr_io.hpp"
 
+namespace {
+
+std::int64_t little_endian32(const std::uint8_t* p) {
+  return static_cast<std::int32_t>(std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 | std::uint32_t{p[2]} << 16 |
+                                   std::uint32_t{p[3]} << 24);
+}
+
+// Walks the first header's attributes (name\0 type\0 int32 size, data; an empty name ends it) and
+// skips the input when an attribute declares more bytes than the input holds, or a chunk count
+// whose offset table cannot fit (OpenEXR allocates and clears the declared size before it finds
+// the file short: up to gigabytes per input, and the same refusal every time), or the data window
+// is a legal size above kFuzzPixels.
+bool skipped(const std::uint8_t* data, std::size_t size) {
+  std::size_t at = 8;  // magic number and version
+  while (at < size) {
+    const auto* name_end = static_cast<const std::uint8_t*>(std::memchr(data + at, 0, size - at));
+    if (name_end == nullptr || name_end == data + at) return false;  // truncated, or the end of the header
+    const std::string name(reinterpret_cast<const char*>(data + at), name_end - (data + at));
+    at = name_end - data + 1;
+    const auto* type_end = static_cast<const std::uint8_t*>(std::memchr(data + at, 0, size - at));
+    if (type_end == nullptr || size - (type_end - data + 1) < 4) return false;
+    at = type_end - data + 1;
+    const std::int64_t declared = little_endian32(data + at);
+    at += 4;
+    if (declared < 0) return false;
+    if (declared > static_cast<std::int64_t>(size - at)) return true;
+    // A chunk offset table of chunkCount 8-byte entries that cannot fit in the input: OpenEXR
+    // allocates it first (gigabytes for a hostile count).
+    if (name == "chunkCount" && declared == 4 && little_endian32(data + at) > static_cast<std::int64_t>(size / 8))
+      return true;
+    if (name == "dataWindow" && declared == 16) {
+      const std::int64_t width = little_endian32(data + at + 8) - little_endian32(data + at) + 1;
+      const std::int64_t height = little_endian32(data + at + 12) - little_endian32(data + at + 4) + 1;
+      if (facet::fuzz::legal_but_too_large_to_fuzz(width, height)) return true;
+    }
+    at += static_cast<std::size_t>(declared);
+  }
+  return false;
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (facet::fuzz::kSkipCostlyInputs && skipped(data, size)) return 0;
   const facet::fuzz::FuzzInputFile input(data, size, ".exr");
   try {
     facet::ExrMetadata metadata;
