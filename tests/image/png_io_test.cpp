@@ -8,6 +8,11 @@
 #include <fstream>
 #include <limits>
 #include <random>
+#include <string>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "common/error.hpp"
 #include "image/exr_io.hpp"
@@ -149,6 +154,38 @@ TEST(PngIo, BadInputsGiveOneLineErrorNamingThePath) {
       EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     }
   }
+}
+
+// A text chunk that claims 1.7 GB in a file of a few hundred bytes: read_png refuses it in one line
+// without letting libpng allocate and clear the claimed length first (before the fix the read
+// took 1.7 GB). Read in a child process so that its peak resident size can be measured.
+TEST(PngIo, HostileChunkLengthCostsNoMemory) {
+  TempDir dir;
+  write_png_rgb8(dir / "whole.png", 8, 8, std::vector<std::uint8_t>(3 * 8 * 8, 77));
+  std::ifstream in(dir / "whole.png", std::ios::binary);
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  // After the signature (8) and IHDR (4 + 4 + 13 + 4): tEXt of length 0x67000000, a few bytes of it.
+  const std::string hostile = std::string("\x67\x00\x00\x00tEXtComment", 15) + std::string(64, 'x');
+  bytes = bytes.substr(0, 33) + hostile;
+  std::ofstream(dir / "hostile.png", std::ios::binary) << bytes;
+  rusage before{};
+  getrusage(RUSAGE_SELF, &before);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    try {
+      read_png(dir / "hostile.png");
+    } catch (const Error& e) {
+      _exit(std::string(e.what()).find('\n') == std::string::npos ? 0 : 2);
+    }
+    _exit(1);
+  }
+  int status = 0;
+  rusage used{};
+  ASSERT_EQ(wait4(child, &status, 0, &used), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);  // 1: accepted, 2: not one line
+  EXPECT_LT(used.ru_maxrss - before.ru_maxrss, 256 * 1024) << "KiB";  // 1.7 GB before the fix
 }
 
 TEST(PngIo, FailedWritesLeaveNothing) {
