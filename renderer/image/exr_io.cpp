@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "image/atomic_file.hpp"
+#include "image/exr_header_check.hpp"
 #include "image/io_error.hpp"
 
 namespace facet {
@@ -132,6 +134,8 @@ auto read_with(const std::filesystem::path& path, Read read) {
   if (!std::filesystem::is_regular_file(path, ec)) throw io_error(path, "not a regular file");
   if (!Imf::isOpenExrFile(path.c_str())) throw io_error(path, "not an OpenEXR file");
   try {
+    std::ifstream header(path, std::ios::binary);
+    check_exr_header_sizes(header, std::filesystem::file_size(path));
     Imf::InputFile input(path.c_str());
     // Before any pixel is allocated: a file missing chunks of its data window (truncated, or a
     // header promising more than the file holds) is refused.

@@ -1,0 +1,57 @@
+#include "image/exr_header_check.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace facet {
+
+namespace {
+
+constexpr std::uint32_t kMultipartFlag = 0x1000;  // version field bit 12 (OpenEXR file layout)
+constexpr std::size_t kMaxName = 255;             // attribute names and types, long-names flag included
+
+bool read_name(std::istream& in, std::string& out) {
+  out.clear();
+  for (char c; in.get(c);) {
+    if (c == '\0') return true;
+    if (out.size() == kMaxName) return false;
+    out += c;
+  }
+  return false;
+}
+
+bool read_le32(std::istream& in, std::uint32_t& out) {
+  unsigned char b[4];
+  if (!in.read(reinterpret_cast<char*>(b), 4)) return false;
+  out = std::uint32_t{b[0]} | std::uint32_t{b[1]} << 8 | std::uint32_t{b[2]} << 16 | std::uint32_t{b[3]} << 24;
+  return true;
+}
+
+}  // namespace
+
+void check_exr_header_sizes(std::istream& in, std::uint64_t file_bytes) {
+  std::uint32_t magic = 0, version = 0;
+  if (!read_le32(in, magic) || !read_le32(in, version)) return;
+  const bool multipart = (version & kMultipartFlag) != 0;
+  std::string name, type;
+  bool header_empty = true;
+  while (read_name(in, name)) {
+    if (name.empty()) {  // the end of a header; in a multipart file an empty header ends the list
+      if (!multipart || header_empty) return;
+      header_empty = true;
+      continue;
+    }
+    header_empty = false;
+    std::uint32_t size = 0;
+    if (!read_name(in, type) || !read_le32(in, size)) return;
+    const std::streamoff offset = in.tellg();
+    if (offset < 0) return;
+    const std::uint64_t at = static_cast<std::uint64_t>(offset), left = file_bytes > at ? file_bytes - at : 0;
+    if (size > left)
+      throw std::runtime_error("header attribute '" + name + "' claims " + std::to_string(size) + " bytes, the file has " +
+                               std::to_string(left) + " left");
+    if (!in.seekg(size, std::ios::cur)) return;
+  }
+}
+
+}  // namespace facet
