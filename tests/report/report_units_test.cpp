@@ -183,7 +183,10 @@ TEST(MethodCatalogue, AppliesTextureMethodsOnlyToScenesWithSubPixelDetail) {
   grating.diffraction = true;
   EXPECT_EQ(names(select_methods(grating, true, {})),
             (std::vector<std::string>{"naive", "diffraction:spectral", "diffraction:preintegrated", "diffraction:orders",
-                                      "wavelengths:8", "wavelengths:16", "wavelengths:32", "ss:1", "ss:2", "ss:4", "ss:8"}));
+                                      "wavelengths:8", "wavelengths:16", "wavelengths:32", "ss:1", "ss:2", "ss:4"}));
+  const auto full = names(select_methods(grating, false, {}));
+  EXPECT_EQ(full.back(), "ss:4");  // ss:8 and ss:16 would trace the spectral loop 64 and 256 times per pixel
+  EXPECT_EQ(names(select_methods(grating, false, {"ss:8"})), (std::vector<std::string>{"ss:8"}));  // on request
 }
 
 TEST(MethodCatalogue, ReadsSceneFeaturesFromMaterials) {
