@@ -17,6 +17,7 @@
 #include "gpu/direct_pass.hpp"
 #include "kernels/shared.hpp"
 #include "scene/camera_frame.hpp"
+#include "plate_scene.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -24,24 +25,7 @@ namespace {
 
 constexpr double kPeriodNm = 1600.0;
 
-// A sinusoidal plate in the z = 0 plane, ridges along y (the plane's tangent), lit at normal
-// incidence by a white light: order m leaves where the view direction d (= -wr) has d.x = m lambda / period.
-Scene plate_scene(double coherence_um) {
-  Scene scene;
-  scene.light.direction = {0.0, 0.0, 1.0};
-  scene.light.irradiance = {1.0, 1.0, 1.0};
-  DiffractionMaterial m;
-  m.grating = std::make_shared<const diffraction::Grating>(test::grating(
-      R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":32,"samples":128,"coherence_um":)" +
-      std::to_string(coherence_um) + "}"));
-  scene.materials = {m};
-  scene.material_names = {"plate"};
-  Plane plane;
-  plane.normal = {0.0, 0.0, 1.0};
-  plane.tangent = {0.0, 1.0, 0.0};
-  scene.planes = {plane};
-  return scene;
-}
+using test::plate_scene;  // period kPeriodNm
 
 double largest(glm::dvec3 v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 

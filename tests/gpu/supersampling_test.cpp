@@ -5,10 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <variant>
 
 #include <gtest/gtest.h>
 
-#include "diffraction/diffraction_cases.hpp"
+#include "diffraction/plate_scene.hpp"
 #include "gpu/direct_pass.hpp"
 #include "lambert_scenes.hpp"
 #include "support/vulkan_fixture.hpp"
@@ -61,21 +62,11 @@ TEST(Supersampling, DiffractionRaysNearTheLoopLimitAreNotCutShort) {
   // 800 wavelengths x 25 bins x 10 Taylor terms: 60 801 loop iterations per ray, just under lavapipe's
   // 65 535 per invocation (docs/diffraction.md). Looping over 9 strata in one invocation would end the
   // spectral loops early and silently; one stratum per dispatch must give the 3x frame's block means.
-  Scene scene;
-  scene.light.direction = {0.0, 0.0, 1.0};
-  scene.light.irradiance = {1.0, 1.0, 1.0};
+  Scene scene = test::plate_scene(8.0);
   scene.ambient = {0.1, 0.1, 0.1};
-  DiffractionMaterial m;
-  m.grating = std::make_shared<const diffraction::Grating>(test::grating(
-      R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":32,"samples":128,"coherence_um":8})"));
+  auto& m = std::get<DiffractionMaterial>(scene.materials[0]);
   m.wavelengths = 800;
   m.base_albedo = {0.2, 0.1, 0.05};
-  scene.materials = {m};
-  scene.material_names = {"plate"};
-  Plane plane;
-  plane.normal = {0.0, 0.0, 1.0};
-  plane.tangent = {0.0, 1.0, 0.0};
-  scene.planes = {plane};
   scene.camera.position = {0.0, 0.0, 1.0};
   scene.camera.target = {0.0, 0.0, 0.0};
   scene.camera.fov_y_deg = 90.0;
