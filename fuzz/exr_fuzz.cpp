@@ -3,15 +3,17 @@
 // (read_scalar_field_exr).
 // A facet::Error is the expected answer to bad input; anything else (a crash, a sanitizer report,
 // another exception escaping) is a bug.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
+#include <sstream>
 #include <string>
 
 #include "assets/scalar_field.hpp"
 #include "common/error.hpp"
 #include "fuzz_image_size.hpp"
 #include "fuzz_input_file.hpp"
+#include "image/exr_header_check.hpp"
 #include "image/exr_io.hpp"
 
 namespace {
@@ -21,31 +23,20 @@ std::int64_t little_endian32(const std::uint8_t* p) {
                                    std::uint32_t{p[3]} << 24);
 }
 
-// Walks the first header's attributes (name\0 type\0 int32 size, data; an empty name ends it) to
-// the data window, and skips the input if that is a legal size above kFuzzPixels. (Attributes that
-// claim more than the file holds are refused by read_exr itself before any allocation:
-// image/exr_header_check.hpp.)
+// True if the data window is a legal size above kFuzzPixels. (Attributes that claim more than the
+// file holds are refused by read_exr itself before any allocation: image/exr_header_check.hpp.)
 bool skipped(const std::uint8_t* data, std::size_t size) {
-  std::size_t at = 8;  // magic number and version
-  while (at < size) {
-    const auto* name_end = static_cast<const std::uint8_t*>(std::memchr(data + at, 0, size - at));
-    if (name_end == nullptr || name_end == data + at) return false;  // truncated, or the end of the header
-    const std::string name(reinterpret_cast<const char*>(data + at), name_end - (data + at));
-    at = name_end - data + 1;
-    const auto* type_end = static_cast<const std::uint8_t*>(std::memchr(data + at, 0, size - at));
-    if (type_end == nullptr || size - (type_end - data + 1) < 4) return false;
-    at = type_end - data + 1;
-    const std::int64_t declared = little_endian32(data + at);
-    at += 4;
-    if (declared < 0 || declared > static_cast<std::int64_t>(size - at)) return false;
-    if (name == "dataWindow" && declared == 16) {
-      const std::int64_t width = little_endian32(data + at + 8) - little_endian32(data + at) + 1;
-      const std::int64_t height = little_endian32(data + at + 12) - little_endian32(data + at + 4) + 1;
-      return facet::fuzz::legal_but_too_large_to_fuzz(width, height);
-    }
-    at += static_cast<std::size_t>(declared);
-  }
-  return false;
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  bool large = false;
+  facet::walk_exr_headers(in, [&](const facet::ExrAttribute& a) {
+    if (a.size > size - std::min<std::uint64_t>(a.offset, size)) return false;  // left to read_exr
+    if (a.name != "dataWindow" || a.size != 16) return true;
+    const std::uint8_t* box = data + a.offset;  // xMin, yMin, xMax, yMax
+    large = facet::fuzz::legal_but_too_large_to_fuzz(little_endian32(box + 8) - little_endian32(box) + 1,
+                                                    little_endian32(box + 12) - little_endian32(box + 4) + 1);
+    return false;
+  });
+  return large;
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // Image sizes the fuzz targets skip. A valid file may declare up to 16384 x 16384 pixels
 // (kMaxImageFileSide) and compress them into a few kilobytes: correct to read, but up to
-// gigabytes and seconds per input for the fuzzer, and the same decoding code as a small image. Inputs declaring a legal size above kFuzzPixels are therefore
-// skipped; sizes outside the legal range still reach the readers (their refusal is what is
-// fuzzed); a large legal image is read by Faults.FramesBeyondTheStorageBufferRangeRenderWhole
-// (2900 x 2900 EXR).
+// gigabytes and seconds per input for the fuzzer, and the same decoding code as a small image.
+// Inputs declaring a legal size above kFuzzPixels are therefore skipped; sizes outside the legal
+// range still reach the readers (their refusal is what is fuzzed); a large legal image is read by
+// Faults.FramesBeyondTheStorageBufferRangeRenderWhole (2900 x 2900 EXR).
 #pragma once
 
 #include <cstdint>

@@ -13,10 +13,17 @@ namespace facet::gpu {
 
 using diffraction::GpuDiffractionMaterial;
 
+namespace {
+
+// One bin's loop iterations: itself plus the Taylor steps, unrolled by 8 (kDiffractionTaylorUnroll
+// in render/diffraction_taylor.glsl).
+long bin_loop_iterations(const diffraction::SpectralTables& tables) { return 1 + (tables.N - 1 + 7) / 8; }
+
+}  // namespace
+
 long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepared) {
   const long bins = (2L * prepared.tables.r + 1) * (2L * prepared.tables.r + 1);
-  const long taylor = (prepared.tables.N - 1 + 7) / 8;
-  return static_cast<long>(prepared.samples.lambda_nm.size()) * (1 + bins * (1 + taylor));
+  return static_cast<long>(prepared.samples.lambda_nm.size()) * (1 + bins * bin_loop_iterations(prepared.tables));
 }
 
 long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables) {
@@ -24,8 +31,7 @@ long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diff
   const glm::dvec2 radius = glm::floor(glm::dvec2(L.reach) / L.frequency + 0.5);  // diffraction_order_share's
   const long share = static_cast<long>((2 * radius.y + 1) * (2 * radius.x + 2));   // rows, each with its columns
   const glm::ivec2 bins = 2 * tables.r / L.repeats + 1;                             // lattice bins per axis, at most
-  const long taylor = (tables.N - 1 + 7) / 8;
-  const long per_node = 2 + share + static_cast<long>(bins.x) * bins.y * (1 + taylor);
+  const long per_node = 2 + share + static_cast<long>(bins.x) * bins.y * bin_loop_iterations(tables);
   return static_cast<long>(std::ceil(plan.worst_orders) + std::ceil(plan.most_nodes) * per_node);
 }
 

@@ -1,10 +1,10 @@
 // The order in which a dispatch's workgroups visit the blocks of a tile
-// (render_direct.comp, tile_block). Lavapipe hands each of its T threads one contiguous 1/T of a
+// (render_direct.comp, tile_position). Lavapipe hands each of its T threads one contiguous 1/T of a
 // dispatch's workgroups (Mesa's lp_cs_tpool: iter_per_thread = count / threads, no stealing),
 // so where the costly pixels gather in one part of a tile (a highlight, a band of diffraction
 // orders) that thread works alone while the others idle. Workgroup g therefore renders block
 // g s mod n, with s coprime to n near n / golden ratio: every contiguous run of workgroups is
-// spread evenly over the whole tile (docs/render_speed.md, "Workgroup order").
+// spread evenly over the whole tile (docs/render_speed.md, item 5).
 #pragma once
 
 #include <cstdint>

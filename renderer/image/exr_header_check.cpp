@@ -29,29 +29,35 @@ bool read_le32(std::istream& in, std::uint32_t& out) {
 
 }  // namespace
 
-void check_exr_header_sizes(std::istream& in, std::uint64_t file_bytes) {
+void walk_exr_headers(std::istream& in, const std::function<bool(const ExrAttribute&)>& visit) {
   std::uint32_t magic = 0, version = 0;
   if (!read_le32(in, magic) || !read_le32(in, version)) return;
   const bool multipart = (version & kMultipartFlag) != 0;
-  std::string name, type;
+  ExrAttribute attribute;
   bool header_empty = true;
-  while (read_name(in, name)) {
-    if (name.empty()) {  // the end of a header; in a multipart file an empty header ends the list
+  while (read_name(in, attribute.name)) {
+    if (attribute.name.empty()) {  // the end of a header; in a multipart file an empty header ends the list
       if (!multipart || header_empty) return;
       header_empty = true;
       continue;
     }
     header_empty = false;
-    std::uint32_t size = 0;
-    if (!read_name(in, type) || !read_le32(in, size)) return;
+    if (!read_name(in, attribute.type) || !read_le32(in, attribute.size)) return;
     const std::streamoff offset = in.tellg();
     if (offset < 0) return;
-    const std::uint64_t at = static_cast<std::uint64_t>(offset), left = file_bytes > at ? file_bytes - at : 0;
-    if (size > left)
-      throw std::runtime_error("header attribute '" + name + "' claims " + std::to_string(size) + " bytes, the file has " +
-                               std::to_string(left) + " left");
-    if (!in.seekg(size, std::ios::cur)) return;
+    attribute.offset = static_cast<std::uint64_t>(offset);
+    if (!visit(attribute) || !in.seekg(offset + static_cast<std::streamoff>(attribute.size))) return;
   }
+}
+
+void check_exr_header_sizes(std::istream& in, std::uint64_t file_bytes) {
+  walk_exr_headers(in, [&](const ExrAttribute& a) {
+    const std::uint64_t left = file_bytes > a.offset ? file_bytes - a.offset : 0;
+    if (a.size > left)
+      throw std::runtime_error("header attribute '" + a.name + "' claims " + std::to_string(a.size) +
+                               " bytes, the file has " + std::to_string(left) + " left");
+    return true;
+  });
 }
 
 }  // namespace facet
