@@ -15,6 +15,7 @@
 //   4 kHasDiffraction  diffraction gratings (render/diffraction_shading.glsl)
 //   5 kDiffractionMethod  how a grating's spectrum becomes a colour: 0 spectral (wavelength samples)
 //   6 kHasMicrosurface colour-mapped microsurfaces on finite planes, by kTextureMethod
+//                      (naive and ss:K trace their height fields: render/heightfield_trace.glsl)
 //   7 kHasSpheres, 8 kHasTriangles  the scene has spheres / meshes (render/trace.glsl): lavapipe runs
 //                      the body of a loop over no primitives once, masked, so absent kinds are compiled out
 // Tracing, the scene's buffers and each material family's shading live in render/*.glsl.
@@ -29,6 +30,9 @@ layout(constant_id = 5) const uint kDiffractionMethod = 0u;
 layout(constant_id = 6) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
 layout(constant_id = 7) const bool kHasSpheres = true;
 layout(constant_id = 8) const bool kHasTriangles = true;
+// naive and ss:K see a microsurface as the reference does: its height field, traced (filtered where
+// the footprint is within a few texels, radiance()).
+const bool kTracesHeightFields = kHasMicrosurface && kTextureMethod == 0u;
 
 #include "lib/camera.glsl"
 #include "lib/lambert.glsl"
@@ -44,21 +48,22 @@ vec3 camera_ray(vec2 film) {
                               vec2(globals.image.xy));
 }
 
-// Radiance along the camera ray through `film` (pixels); `pixel_step` is the film distance to the
-// neighbouring rays whose hits span the texture footprint.
-vec3 radiance(vec2 film, float pixel_step) {
-  vec3 o = globals.camera_origin.xyz;
-  vec3 d = camera_ray(film);
-  Hit hit = trace(o, d, 0.0, kInfinity);
+// Radiance of the hit `hit` of the camera ray o + t d through `film` (pixels); `pixel_step` is the film
+// distance to the neighbouring rays whose hits span the texture footprint; `fields`: microsurface
+// planes are their traced height fields (render/heightfield_trace.glsl), else flat rectangles.
+vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step, bool fields) {
   if (hit.material == kNoHit) return globals.background.rgb;
   vec3 p = o + hit.t * d;
   vec3 n = normalize(hit.normal);
   if (dot(n, d) > 0.0) n = -n;
   vec3 l = globals.light_direction.xyz;
-  // Offset the shadow ray's origin by a distance relative to the scene's scale at p.
-  vec3 shadow_origin = p + n * (1e-4 * max(1.0, length(p)));
-  float visibility = dot(n, l) > 0.0 && occluded(shadow_origin, l, hit, n) ? 0.0 : 1.0;
+  // Offset the shadow ray's origin by a distance relative to the scene's scale at p; a height field's
+  // hits are exact to a few float ulps, and its detail is finer than the macro-surfaces' offset.
+  vec3 shadow_origin = p + n * ((hit.primitive == kHeightField ? 1e-5 : 1e-4) * max(1.0, length(p)));
+  float visibility = dot(n, l) > 0.0 && occluded(shadow_origin, l, hit, n, fields) ? 0.0 : 1.0;
   GpuMaterial m = materials[hit.material];
+  if (kHasMicrosurface && hit.primitive == kHeightField)
+    return microsurface_traced_radiance(m, planes[hit.index], hit.barycentric, n, -d, l, visibility);
   if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE)  // finite planes only (scene loader)
     return microsurface_radiance(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
                                  camera_ray(film + vec2(0.0, pixel_step)), l, visibility);
@@ -79,6 +84,32 @@ vec3 radiance(vec2 film, float pixel_step) {
   if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION)
     diffracted = diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility);
   return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb) + diffracted;
+}
+
+// Radiance along the camera ray through `film`. `filtered` hands a microsurface over from its
+// statistics to its traced field where the pixel's footprint shrinks to the texels
+// (microsurface_trace_weight, docs/microsurface_filtering.md "Across scales"): a blend of both over one
+// texel of footprint width, so no seam moves with the camera.
+vec3 radiance(vec2 film, float pixel_step) {
+  vec3 o = globals.camera_origin.xyz;
+  vec3 d = camera_ray(film);
+  // Pass 0 traces as the method does, pass 1 (filtered near a microsurface only) the fields. One call
+  // site of trace and shade: lavapipe compiles each inlined copy of the traversal anew.
+  float traced_weight = 0.0;
+  vec3 sum = vec3(0.0);
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1 && traced_weight <= 0.0) break;
+    bool fields = pass == 1 || kTracesHeightFields;
+    Hit hit = trace(o, d, 0.0, kInfinity, fields);
+    if (pass == 0 && kHasMicrosurface && kTextureMethod >= 3u && hit.material != kNoHit && hit.primitive == kPlane &&
+        materials[hit.material].kind.x == FACET_MATERIAL_MICROSURFACE)
+      traced_weight = microsurface_trace_weight(materials[hit.material], planes[hit.index], o, d, o + hit.t * d,
+                                                camera_ray(film + vec2(pixel_step, 0.0)),
+                                                camera_ray(film + vec2(0.0, pixel_step)));
+    float weight = pass == 0 ? 1.0 - traced_weight : traced_weight;
+    if (weight > 0.0) sum += weight * shade(o, d, hit, film, pixel_step, fields);
+  }
+  return sum;
 }
 
 // The tile position of this invocation: its workgroup renders block g s mod n (g: the workgroup's

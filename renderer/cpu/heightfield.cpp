@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "kernels/shared.hpp"
 
 namespace facet {
 
@@ -24,17 +25,6 @@ Interval slab(double o, double d, double inv_d, double a, double b) {
   return d > 0.0 ? Interval{t_a, t_b} : Interval{t_b, t_a};
 }
 
-// Coordinate (in [0, 1]) of o + t d in the cell [a, a + Δ]. At the t where the ray crosses a face
-// the value is snapped to that face (0 or 1), so the two cells sharing a face evaluate (H1) at the
-// same (u, v) with the same corner heights there: f is continuous across cells bit for bit.
-// With d = 0 the coordinate does not depend on t (which may be infinite for a vertical ray).
-double cell_coordinate(double o, double d, double t, double a, Interval face_t) {
-  if (d == 0.0) return std::clamp(o - a, 0.0, 1.0);
-  if (t == face_t.lo) return d > 0.0 ? 0.0 : 1.0;
-  if (t == face_t.hi) return d > 0.0 ? 1.0 : 0.0;
-  return std::clamp(o + t * d - a, 0.0, 1.0);
-}
-
 // Float bounds rounded outwards, so they still contain the double heights.
 float round_down(double x) {
   float f = static_cast<float>(x);
@@ -43,11 +33,6 @@ float round_down(double x) {
 float round_up(double x) {
   float f = static_cast<float>(x);
   return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
-// (H1) in the form whose value at u ∈ {0, 1} or v ∈ {0, 1} is exactly the edge's linear blend.
-double bilinear(double z00, double z10, double z01, double z11, double u, double v) {
-  return (1.0 - v) * ((1.0 - u) * z00 + u * z10) + v * ((1.0 - u) * z01 + u * z11);
 }
 
 // x mod period in [0, period).
@@ -159,7 +144,7 @@ HeightField::CellPoint HeightField::locate(double x, double y) const {
 
 double HeightField::height_at(double x, double y) const {
   CellPoint p = locate(x, y);
-  return bilinear(p.c.z00, p.c.z10, p.c.z01, p.c.z11, p.u, p.v);
+  return kernels::f64::heightfield_bilinear(glm::dvec4(p.c.z00, p.c.z10, p.c.z01, p.c.z11), p.u, p.v);
 }
 
 glm::dvec2 HeightField::slope_at(double x, double y) const {
@@ -170,68 +155,14 @@ glm::dvec2 HeightField::slope_at(double x, double y) const {
 }
 
 // The first t in [t_lo, t_hi] where the ray meets (H1) over cell (i, j) of tile (tile_x, tile_y),
-// or +inf. With s = t − t_in, f(s) = z_ray − z_surface = A s² + B s + C (H3) where
-//   A = −e du dv, B = dz − (b + e v0) du − (c + e u0) dv, C = f(t_in),
-//   b = z10 − z00, c = z01 − z00, e = z00 − z10 − z01 + z11, du = dx/Δ, dv = dy/Δ
-// (x, y in texels: the ray's own d_x, d_y).
+// or +inf: the shared kernel of the GPU tracer (shaders/lib/heightfield_cell.glsl, eq. H3) in double.
 double HeightField::cell_hit(const LocalRay& r, int tile_x, int tile_y, int i, int j, double t_lo, double t_hi) const {
-  std::int64_t gi = static_cast<std::int64_t>(tile_x) * width_ + i,
-               gj = static_cast<std::int64_t>(tile_y) * height_ + j;
-  double x0 = static_cast<double>(gi), x1 = static_cast<double>(gi + 1);
-  double y0 = static_cast<double>(gj), y1 = static_cast<double>(gj + 1);
-  Interval tx = slab(r.o.x, r.d.x, r.inv_d.x, x0, x1), ty = slab(r.o.y, r.d.y, r.inv_d.y, y0, y1);
-  double t_in = std::max({tx.lo, ty.lo, t_lo}), t_out = std::min({tx.hi, ty.hi, t_hi});
-  if (!(t_in <= t_out)) return kInf;
-
-  Cell c = cell(i, j);
-  double u0 = cell_coordinate(r.o.x, r.d.x, t_in, x0, tx);
-  double v0 = cell_coordinate(r.o.y, r.d.y, t_in, y0, ty);
-  double u1 = cell_coordinate(r.o.x, r.d.x, t_out, x0, tx);
-  double v1 = cell_coordinate(r.o.y, r.d.y, t_out, y0, ty);
-  double f_in = r.o.z + t_in * r.d.z - bilinear(c.z00, c.z10, c.z01, c.z11, u0, v0);
-  double f_out = r.o.z + t_out * r.d.z - bilinear(c.z00, c.z10, c.z01, c.z11, u1, v1);
-
-  double b = c.z10 - c.z00, cc = c.z01 - c.z00, e = c.z00 - c.z10 - c.z01 + c.z11;
-  double du = r.d.x, dv = r.d.y;  // texels per unit t
-  double A = -e * du * dv;
-  double B = r.d.z - (b + e * v0) * du - (cc + e * u0) * dv;
-  double C = f_in;
-  double span = t_out - t_in;
-
-  // Real roots of (H3), ascending. Stable form: q = −(B + sign(B)√disc)/2, roots q/A and C/q.
-  bool crossing = (f_in > 0.0) != (f_out > 0.0);
-  double roots[2];
-  int n_roots = 0;
-  if (A == 0.0) {
-    if (B != 0.0) roots[n_roots++] = -C / B;
-  } else {
-    double disc = B * B - 4.0 * A * C;
-    if (disc < 0.0 && crossing) disc = 0.0;  // a crossing guarantees a root: rounding made disc < 0
-    if (disc >= 0.0) {
-      double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
-      double r1 = q == 0.0 ? 0.0 : q / A, r2 = q == 0.0 ? 0.0 : C / q;  // q = 0: B = C = 0, root 0
-      roots[n_roots++] = std::min(r1, r2);
-      roots[n_roots++] = std::max(r1, r2);
-    }
-  }
-
-  double s = kInf;
-  if (crossing) {
-    // Exactly one root lies in [0, span]: take the computed root nearest to that interval and clamp
-    // it in (rounding can push it just outside; the signs decide that the crossing exists).
-    double best_distance = kInf;
-    for (int k = 0; k < n_roots; ++k) {
-      double distance = std::max({0.0, -roots[k], roots[k] - span});
-      if (distance < best_distance) {
-        best_distance = distance;
-        s = std::clamp(roots[k], 0.0, span);
-      }
-    }
-  } else if (n_roots == 2 && roots[0] >= 0.0 && roots[1] <= span) {
-    s = roots[0];  // no sign change, yet the ray dips under the surface and out within the cell
-  }
-  double t = t_in + s;
-  return t > 0.0 ? t : kInf;  // t = 0: a ray starting on the surface does not hit itself there
+  const std::int64_t gi = static_cast<std::int64_t>(tile_x) * width_ + i,
+                     gj = static_cast<std::int64_t>(tile_y) * height_ + j;
+  const Cell c = cell(i, j);
+  const double t = kernels::f64::heightfield_cell_hit(r.o, r.d, r.inv_d, static_cast<double>(gi), static_cast<double>(gj),
+                                                      glm::dvec4(c.z00, c.z10, c.z01, c.z11), t_lo, t_hi);
+  return t > 0.0 ? t : kInf;
 }
 
 // Front-to-back traversal of the tile quadtree and each tile's min–max mip. Returns the nearest hit

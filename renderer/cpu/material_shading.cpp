@@ -35,14 +35,8 @@ glm::dvec3 microsurface_albedo(const MicrosurfaceMaterial& material, double heig
 
 glm::dvec3 beckmann_specular_radiance(const BeckmannSpecular& specular, glm::dvec3 n, glm::dvec3 tangent,
                                       glm::dvec3 v, glm::dvec3 l, glm::dvec3 light_irradiance, double visibility) {
-  const glm::dvec3 t = glm::normalize(tangent - glm::dot(tangent, n) * n);
-  const glm::dvec3 b = glm::cross(n, t);
-  const glm::dvec3 wi(glm::dot(l, t), glm::dot(l, b), glm::dot(l, n));
-  const glm::dvec3 wo(glm::dot(v, t), glm::dot(v, b), glm::dot(v, n));
-  if (!(wi.z > 0.0 && wo.z > 0.0) || visibility == 0.0) return glm::dvec3(0.0);
-  const glm::dvec3 h = glm::normalize(wi + wo);
-  const double g2 = 1.0 / (1.0 + k::ndf_beckmann_lambda(wi, specular.alpha) + k::ndf_beckmann_lambda(wo, specular.alpha));
-  const double f_cos = k::ndf_beckmann_D(h, specular.alpha) * g2 / (4.0 * wo.z);  // f · cos_i
+  if (visibility == 0.0) return glm::dvec3(0.0);
+  const double f_cos = k::beckmann_facet_specular(n, tangent, v, l, specular.alpha);
   return light_irradiance * specular.reflectance * (f_cos * visibility);
 }
 

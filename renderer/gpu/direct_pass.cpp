@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "gpu/microsurface_upload.hpp"
 #include "gpu/workgroup_order.hpp"
 #include "render_direct.spv.h"
 
@@ -20,6 +21,27 @@ bool uses(const Scene& scene) {
     if (std::holds_alternative<M>(m)) return true;
   return false;
 }
+// naive and ss:K trace microsurfaces' height fields (render/heightfield_trace.glsl): refuses, in one
+// line, fields whose traversal could pass the shader's loop bound or stack (lavapipe would cut the
+// loop short without a word).
+void check_height_field_tracing(const Scene& scene, const RenderMethod& method) {
+  if (method.texture != RenderMethod::Texture::Naive) return;
+  std::int64_t nodes = 0;
+  for (const Plane& plane : scene.planes) {
+    const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
+    if (!m || !plane.size) continue;
+    const HeightFieldTraceCost cost = heightfield_trace_cost(*m, *plane.size);
+    if (cost.levels > 21)
+      throw Error("microsurface '" + scene.material_names[plane.material] + "': its rectangle spans too many tiles of " +
+                  "its field for the GPU tracer's quadtree (" + std::to_string(cost.levels) + " levels > 21)");
+    nodes += cost.nodes;
+  }
+  if (nodes > FACET_HEIGHTFIELD_MAX_STEPS)
+    throw Error("the microsurfaces' height fields span too many texels for the GPU tracer: a ray may visit " +
+                std::to_string(nodes) + " quadtree nodes, more than its loop bound of " +
+                std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) + " (use coarser texels, a smaller rectangle or --method filtered)");
+}
+
 }  // namespace
 
 int tile_count(int width, int height, int tile_size) {
@@ -46,7 +68,9 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                                            {5, static_cast<uint32_t>(diffraction_.method)},
                                            {6, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u},
                                            {7, scene.spheres.empty() ? 0u : 1u},
-                                           {8, scene.meshes.empty() ? 0u : 1u}}}) {}
+                                           {8, scene.meshes.empty() ? 0u : 1u}}}) {
+  check_height_field_tracing(scene, method);
+}
 
 std::vector<const vk::Buffer*> DirectPass::bindings() const {
   std::vector<const vk::Buffer*> all = buffers_.bindings(pixels_);

@@ -1,6 +1,8 @@
 #include "gpu/microsurface_upload.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "gpu/mip_builder.hpp"
 
@@ -16,7 +18,67 @@ struct Patch {
   double z00, b, c, e;
 };
 
+// The min-max MIP of the field's cells for the GPU tracer (render/heightfield_trace.glsl): level 0
+// holds (min, max) of each cell's four vertex heights as stored (float, so the bounds hold exactly
+// what the tracer reads), each coarser level the extremes of its 2 x 2 children, down to 1 x 1.
+// Returns the first level record; the chain has mip_chain_sizes(width, height).size() levels.
+uint append_height_bounds(TextureData& data, uint vertex_level) {
+  const uvec4 info = data.levels[vertex_level].info;
+  const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
+  const auto z = [&](int i, int j) { return data.texels[info.x + static_cast<size_t>(j % h) * w + (i % w)].x; };
+  const uint first = static_cast<uint>(data.levels.size());
+  const std::vector<glm::uvec2> sizes = mip_chain_sizes(w, h);
+  for (size_t l = 0; l < sizes.size(); ++l) {
+    const uint offset = static_cast<uint>(data.texels.size());
+    data.levels.push_back({uvec4(offset, sizes[l].x, sizes[l].y, l)});
+    for (uint j = 0; j < sizes[l].y; ++j)
+      for (uint i = 0; i < sizes[l].x; ++i) {
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        if (l == 0) {
+          for (int c = 0; c < 4; ++c) {
+            const float v = z(static_cast<int>(i) + (c & 1), static_cast<int>(j) + (c >> 1));
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+          }
+        } else {  // children outside the finer level (odd sizes) are skipped
+          const uvec4 fine = data.levels[first + l - 1].info;
+          for (uint c = 0; c < 4; ++c) {
+            const uint fi = 2 * i + (c & 1), fj = 2 * j + (c >> 1);
+            if (fi >= fine.y || fj >= fine.z) continue;
+            const vec4 b = data.texels[fine.x + static_cast<size_t>(fj) * fine.y + fi];
+            lo = std::min(lo, b.x);
+            hi = std::max(hi, b.y);
+          }
+        }
+        data.texels.push_back(vec4(lo, hi, 0.0f, 0.0f));
+      }
+  }
+  return first;
+}
+
+int ceil_log2(std::int64_t n) {
+  int levels = 0;
+  while ((std::int64_t{1} << levels) < n) ++levels;
+  return levels;
+}
+
 }  // namespace
+
+HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material, glm::dvec2 patch_size) {
+  const std::int64_t w = material.heights->width, h = material.heights->height;
+  const std::int64_t tiles_x = static_cast<std::int64_t>(std::ceil(patch_size.x / (static_cast<double>(w) * material.texel_size)));
+  const std::int64_t tiles_y = static_cast<std::int64_t>(std::ceil(patch_size.y / (static_cast<double>(h) * material.texel_size)));
+  HeightFieldTraceCost cost;
+  cost.levels = ceil_log2(std::max(w, h)) + ceil_log2(std::max(tiles_x, tiles_y));
+  // A line crosses at most C - 1 column and R - 1 row boundaries of a C x R grid of nodes, and each
+  // crossing adds at most 1.5 nodes whose closed boxes it touches (3 at a corner): < 2 (C + R) per level.
+  const auto add = [&](std::int64_t columns, std::int64_t rows) { cost.nodes += 2 * (columns + rows); };
+  for (int l = 0; (std::int64_t{1} << l) < 2 * std::max(w, h); ++l)
+    add(tiles_x * ((w + (std::int64_t{1} << l) - 1) >> l), tiles_y * ((h + (std::int64_t{1} << l) - 1) >> l));
+  for (int g = 1; (std::int64_t{1} << g) < 2 * std::max(tiles_x, tiles_y); ++g)
+    add((tiles_x + (std::int64_t{1} << g) - 1) >> g, (tiles_y + (std::int64_t{1} << g) - 1) >> g);
+  return cost;
+}
 
 MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, double z_offset) {
   const assets::ScalarField& field = *material.heights;
@@ -74,6 +136,7 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
   append_mip_chain(data, field.width, field.height, level0.slopes);
   append_mip_chain(data, field.width, field.height, level0.albedo);
   const uint count = static_cast<uint>(mip_chain_sizes(field.width, field.height).size());
+  const uint bounds = append_height_bounds(data, first);
 
   const auto add_map = [&](const std::optional<Colormap>& map) {
     if (!map) return FACET_NO_COLORMAP;
@@ -85,7 +148,7 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
   const glm::dvec2 alpha = material.specular ? material.specular->alpha : glm::dvec2(1.0);
   const glm::dvec3 reflectance = material.specular ? material.specular->reflectance : glm::dvec3(0.0);
   return {vec4(glm::vec3(reflectance), static_cast<float>(material.texel_size)),
-          uvec4(FACET_MATERIAL_MICROSURFACE, material.specular ? 1u : 0u, 0, 0),
+          uvec4(FACET_MATERIAL_MICROSURFACE, material.specular ? 1u : 0u, bounds, count),
           vec4(static_cast<float>(alpha.x), static_cast<float>(alpha.y), static_cast<float>(z_offset), 0.0f),
           uvec4(first, count, height_map, slope_map)};
 }

@@ -7,8 +7,11 @@
 //     slopes   (E[s_x^2], E[s_y^2], E[s_x s_y], 0)    slopes s = grad z in world units,
 //     albedo   (mean height_colormap(z) slope_colormap(|s|) over the patch, 0), for colormip.
 // Coarser levels are box means (append_mip_chain), i.e. the moments over the covered patches.
+// Then the min-max MIP of the cells (min, max, -, -) for the tracer (render/heightfield_trace.glsl),
+// `count` levels of the same sizes, built on the CPU.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "gpu/scene_layout.hpp"
@@ -25,9 +28,18 @@ MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, dou
 
 // Appends the vertex level, the three chains and the colour maps; returns the material record:
 //   albedo  (specular reflectance rgb, texel size)
-//   kind    (FACET_MATERIAL_MICROSURFACE, 1 if it has a specular lobe, -, -)
+//   kind    (FACET_MATERIAL_MICROSURFACE, 1 if it has a specular lobe, first min-max level, its level count)
 //   params  (alpha_x, alpha_y, z_offset, -)
 //   texture (first level = vertex level, chain level count, height map, slope map (or FACET_NO_COLORMAP))
 GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& material);
+
+// What tracing the material's field over a rectangle of patch_size costs the GPU tracer: an upper
+// bound on the quadtree nodes one ray visits (at most FACET_HEIGHTFIELD_MAX_STEPS loop steps in all
+// fields of a scene) and the quadtree's depth (its stack holds 3 nodes per level, at most 21 levels).
+struct HeightFieldTraceCost {
+  std::int64_t nodes = 0;
+  int levels = 0;
+};
+HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material, glm::dvec2 patch_size);
 
 }  // namespace facet::gpu

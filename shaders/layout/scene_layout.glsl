@@ -57,6 +57,11 @@ struct GpuBvhNode {
 #define FACET_NO_COLORMAP 0xffffffffu    // a microsurface without this colour-map factor
 #define FACET_MATERIAL_DIFFRACTION 4u  // kind.y: index into diffraction_materials (render/diffraction_shading.glsl)
 
+// Quadtree nodes the height-field rays of one sample may visit on the GPU, per ray (camera, shadow;
+// render/heightfield_trace.glsl): both leave ~9500 of lavapipe's 65535 loop iterations per invocation
+// to the rest of the pass.
+#define FACET_HEIGHTFIELD_MAX_STEPS 28000
+
 struct GpuMaterial {
   vec4 albedo;
   uvec4 kind;     // x: FACET_MATERIAL_*, y: ndf id of cross_section.glsl (microflake)

@@ -1,7 +1,7 @@
 // Colour-mapped microsurfaces in the direct pass (docs/microsurface_filtering.md): a height field on a
 // finite plane, shaded by the method of kTextureMethod (declared by the including shader):
-//   0 naive     (H1)-(H2) at the hit: colour maps of z and |grad z|, Lambert and Beckmann with the
-//               micro-normal, no masking or micro-shadowing
+//   0 naive     the traced height field (render/heightfield_trace.glsl), shaded per hit as the
+//               reference shades a sample (microsurface_traced_radiance); ss:K averages K x K of them
 //   1 mip       the footprint's mean z and mean slope through the same point shading (the common wrong answer)
 //   2 colormip  the footprint's mean albedo (MIP chain of the colour-mapped field), mean slope
 //   3, 4 filtered  the footprint's Gaussian heights and slopes (lib/microsurface_filter.glsl): visible
@@ -10,25 +10,13 @@
 // Material fields: renderer/gpu/microsurface_upload.hpp.
 #ifndef FACET_RENDER_MICROSURFACE_SHADING_GLSL
 #define FACET_RENDER_MICROSURFACE_SHADING_GLSL
+#include "lib/beckmann_facet.glsl"
+#include "lib/lambert.glsl"
 #include "lib/microsurface_filter.glsl"
 #include "lib/texture_footprint.glsl"
+#include "render/heightfield_trace.glsl"
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
-
-// (H1)-(H2) of docs/assets.md at texel coordinates q (vertex (i, j) at q = (i, j)): (z, dz/dx, dz/dy),
-// z about the material's z_offset, slopes per world unit (delta = texel size).
-vec3 microsurface_point(uint vertex_level, vec2 q, float delta) {
-  uvec4 info = texture_levels[vertex_level].info;
-  int w = int(info.y), h = int(info.z);
-  vec2 cell = floor(q);
-  vec2 f = q - cell;
-  int i0 = int(mod(cell.x, float(w))), j0 = int(mod(cell.y, float(h)));
-  int i1 = (i0 + 1) % w, j1 = (j0 + 1) % h;
-  float z00 = texels[info.x + uint(j0 * w + i0)].x, z10 = texels[info.x + uint(j0 * w + i1)].x;
-  float z01 = texels[info.x + uint(j1 * w + i0)].x, z11 = texels[info.x + uint(j1 * w + i1)].x;
-  float z = mix(mix(z00, z10, f.x), mix(z01, z11, f.x), f.y);
-  return vec3(z, mix(z10 - z00, z11 - z01, f.y) / delta, mix(z01 - z00, z11 - z10, f.x) / delta);
-}
 
 // height_colormap(z) slope_colormap(|s|), each factor only when the material has it.
 vec3 microsurface_height_colour(GpuMaterial m, float z) {
@@ -63,7 +51,7 @@ MicrosurfaceMoments microsurface_tap_moments(GpuMaterial m, vec2 q, vec2 size, f
   MicrosurfaceMoments chain = MicrosurfaceMoments(
       sample_trilinear(first, count, uv, lod), kTextureMethod >= 3u ? sample_trilinear(first + count, count, uv, lod) : vec4(0.0));
   if (point_weight <= 0.0) return chain;
-  MicrosurfaceMoments point = microsurface_point_moments(microsurface_point(m.texture.x, q, m.albedo.w));
+  MicrosurfaceMoments point = microsurface_point_moments(heightfield_point(m.texture.x, q, m.albedo.w));
   return MicrosurfaceMoments(mix(chain.m0, point.m0, point_weight), mix(chain.m1, point.m1, point_weight));
 }
 
@@ -74,6 +62,18 @@ vec3 microsurface_facet_radiance(GpuMaterial m, vec3 albedo, MicrosurfaceStatist
   vec3 diffuse = albedo * FACET_INV_PI * (globals.light_irradiance.rgb * (cos_l * visibility) + globals.ambient.rgb);
   if (m.kind.y == 0u) return diffuse;
   return diffuse + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_specular(stats, m.params.xy, l, v) * visibility);
+}
+
+// A traced hit at field texel q, shaded as the reference shades a sample (cpu/reference_renderer.cpp):
+// the colour maps at (H1)-(H2), Lambert and the facet's own Beckmann lobe with the micro-normal n
+// (unit, facing the viewer); v, l in world space.
+vec3 microsurface_traced_radiance(GpuMaterial m, GpuPlane plane, vec2 q, vec3 n, vec3 v, vec3 l, float visibility) {
+  vec3 point = heightfield_point(m.texture.x, q, m.albedo.w);
+  vec3 albedo = microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz);
+  vec3 c = lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
+  if (m.kind.y == 0u || visibility == 0.0) return c;
+  return c + globals.light_irradiance.rgb * m.albedo.rgb *
+                 (beckmann_facet_specular(n, plane.tangent.xyz, v, l, m.params.xy) * visibility);
 }
 
 // The filtered radiance of a footprint with Gaussian statistics `stats` (docs/microsurface_filtering.md
@@ -113,17 +113,42 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
   return radiance + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_specular(stats, m.params.xy, l, v) * visibility);
 }
 
-// The radiance of microsurface `m` on `plane` hit at p by the ray o + t d; d_dx, d_dy: the rays
-// through the neighbouring pixel positions (the footprint); visibility of the light from p.
+// The pixel's footprint on microsurface `m` on `plane`, hit at p by the ray o + t d; d_dx, d_dy: the
+// rays through the neighbouring pixel positions. q: the hit in texels from the rectangle's (-w/2, -h/2)
+// corner, where the field's vertex (0, 0) sits; size: the field in texels; duv_*: the footprint's
+// axes in field uv (period = the field), as for colour-mapped textures.
+struct MicrosurfaceFootprint {
+  vec2 q, size, duv_dx, duv_dy;
+};
+
+MicrosurfaceFootprint microsurface_footprint(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx,
+                                             vec3 d_dy) {
+  vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
+  float delta = m.albedo.w;
+  vec2 size = vec2(texture_levels[m.texture.x].info.yz);
+  vec3 r = p - plane.point.xyz;
+  vec3 dpdu = t * (size.x * delta), dpdv = b * (size.y * delta);
+  return MicrosurfaceFootprint((vec2(dot(r, t), dot(r, b)) + plane.uv_half_size.zw) / delta, size,
+                               uv_differential(o, d_dx, p, n, dpdu, dpdv), uv_differential(o, d_dy, p, n, dpdu, dpdv));
+}
+
+// How much of `filtered`'s answer comes from the traced field: 1 where the footprint's longer axis is
+// within one texel (one ray resolves the bilinear surface), 0 from two texels on (the statistics),
+// linear in between (docs/microsurface_filtering.md, "Across scales").
+float microsurface_trace_weight(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy) {
+  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy);
+  return clamp(2.0 - max(length(fp.duv_dx * fp.size), length(fp.duv_dy * fp.size)), 0.0, 1.0);
+}
+
+// The radiance of microsurface `m` on `plane` by its footprint's statistics (methods mip, colormip,
+// filtered) hit at p by the ray o + t d; d_dx, d_dy: the rays through the neighbouring pixel positions
+// (the footprint); visibility of the light from p.
 vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy,
                            vec3 l_world, float visibility) {
   vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
-  vec3 r = p - plane.point.xyz;
   float delta = m.albedo.w;
-  uvec4 level0 = texture_levels[m.texture.x].info;
-  vec2 size = vec2(level0.yz);
-  // Texel coordinates from the rectangle's (-w/2, -h/2) corner, where the field's vertex (0, 0) sits.
-  vec2 q = (vec2(dot(r, t), dot(r, b)) + plane.uv_half_size.zw) / delta;
+  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy);
+  vec2 q = fp.q, size = fp.size, duv_dx = fp.duv_dx, duv_dy = fp.duv_dy;
   vec3 v = vec3(dot(-d, t), dot(-d, b), dot(-d, n)) / length(d);
   vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, n));
   // Seen from below, the field is shaded as its mirror image (the upper side's statistics).
@@ -132,16 +157,6 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p
     l.z = -l.z;
   }
   v.z = max(v.z, 1e-6);
-  if (kTextureMethod == 0u) {
-    vec3 point = microsurface_point(m.texture.x, q, delta);
-    MicrosurfaceStatistics stats = microsurface_point_statistics(point);
-    vec3 albedo = microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz);
-    return microsurface_facet_radiance(m, albedo, stats, v, l, visibility);
-  }
-  // The footprint in field uv (period = the field), as for colour-mapped textures.
-  vec3 dpdu = t * (size.x * delta), dpdv = b * (size.y * delta);
-  vec2 duv_dx = uv_differential(o, d_dx, p, n, dpdu, dpdv);
-  vec2 duv_dy = uv_differential(o, d_dy, p, n, dpdu, dpdv);
   // Parallax: the pixel's rays meet the real surface displaced from the flat-plane hit by z cot(theta_v)
   // along the view's azimuth, a spread of standard deviation sigma_h cot(theta_v) (sigma_h of the whole
   // field: the coarsest moment level); the box of that spread, sqrt(12) sigma_h cot(theta_v) long, is
@@ -167,7 +182,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p
     if (kTextureMethod == 2u) {
       vec3 chain = sample_trilinear(m.texture.x + 1u + 2u * m.texture.y, m.texture.y, tap / size, f.lod).rgb;
       if (point_weight > 0.0) {
-        vec3 point = microsurface_point(m.texture.x, tap, delta);
+        vec3 point = heightfield_point(m.texture.x, tap, delta);
         chain = mix(chain, microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz), point_weight);
       }
       albedo += chain;

@@ -1,11 +1,14 @@
 // Closest hits of rays against the scene's planes, spheres and BVH of triangles, any hit for shadow
 // rays, and the surface parameterisation (uv, dp/du, dp/dv) at a hit: what every material's shading
 // starts from. The including shader declares the specialization constants kHasSpheres and
-// kHasTriangles (false: the scene has none, and their loops are compiled out).
+// kHasTriangles (false: the scene has none, and their loops are compiled out) and kHasMicrosurface.
+// With `fields`, microsurface planes are their height fields (render/heightfield_trace.glsl), else
+// flat rectangles.
 #ifndef FACET_RENDER_TRACE_GLSL
 #define FACET_RENDER_TRACE_GLSL
 #include "lib/analytic_intersect.glsl"
 #include "lib/triangle_intersect.glsl"
+#include "render/heightfield_trace.glsl"
 #include "render/scene_bindings.glsl"
 
 const float kInfinity = 1e30;
@@ -14,6 +17,7 @@ const int kStackSize = 64;
 const uint kPlane = 0u;
 const uint kSphere = 1u;
 const uint kTriangle = 2u;
+const uint kHeightField = 3u;  // index: the plane; barycentric: the hit in field texels
 
 struct Hit {
   float t;
@@ -21,8 +25,21 @@ struct Hit {
   uint material;
   uint primitive;  // kPlane, kSphere, kTriangle
   uint index;
-  vec2 barycentric;  // triangles
+  vec2 barycentric;  // triangles; height fields: the hit's texel coordinates
 };
+
+bool is_height_field(GpuPlane plane, bool fields) {
+  return kHasMicrosurface && fields && materials[plane.material.x].kind.x == FACET_MATERIAL_MICROSURFACE;
+}
+
+// The first hit (any hit) of o + t d, t in (0, t_max), with the height field of microsurface plane i, or -1.
+float trace_height_field(uint i, vec3 o, vec3 d, float t_max, bool any_hit, out vec2 q) {
+  GpuMaterial m = materials[planes[i].material.x];
+  HeightFieldRay r = heightfield_ray(m, planes[i], o, d, t_max);
+  float t = heightfield_search(heightfield_of(m, planes[i]), r, any_hit);
+  q = clamp(r.o.xy + t * r.d.xy, vec2(0.0), 2.0 * planes[i].uv_half_size.zw / m.albedo.w);
+  return t;
+}
 
 // The closest hit before hit.t, or with `any_hit` the first one found in traversal order (shadow
 // rays need only whether one exists; callers pass a constant, so each use compiles to one variant).
@@ -60,9 +77,21 @@ bool inside_plane_rectangle(GpuPlane plane, vec3 p) {
   return abs(dot(r, plane.tangent.xyz)) <= plane.uv_half_size.z && abs(dot(r, bitangent)) <= plane.uv_half_size.w;
 }
 
-Hit trace(vec3 o, vec3 d, float t_min, float t_max) {
+Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields) {
   Hit hit = Hit(t_max, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0));
   for (uint i = 0u; i < globals.counts.x; ++i) {
+    if (is_height_field(planes[i], fields)) {
+      vec2 q;
+      float t = trace_height_field(i, o, d, hit.t, false, q);
+      if (t > t_min) {
+        GpuMaterial m = materials[planes[i].material.x];
+        vec3 s = heightfield_point(m.texture.x, q, m.albedo.w);
+        vec3 normal = planes[i].normal.xyz - s.y * planes[i].tangent.xyz -
+                      s.z * cross(planes[i].normal.xyz, planes[i].tangent.xyz);
+        hit = Hit(t, normal, planes[i].material.x, kHeightField, i, q);
+      }
+      continue;
+    }
     float t = intersect_plane(o, d, planes[i].point.xyz, planes[i].normal.xyz, t_min, hit.t);
     if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * d))
       hit = Hit(t, planes[i].normal.xyz, planes[i].material.x, kPlane, i, vec2(0.0));
@@ -81,10 +110,15 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max) {
 // plane `from` lies on (the ray leaves it and never returns), and `from`'s sphere when the ray leaves
 // its outside (a convex body lies entirely behind its tangent plane; from inside, n points inwards
 // and the far wall does block).
-bool occluded(vec3 o, vec3 l, Hit from, vec3 n) {
+bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields) {
   uint skip_plane = from.primitive == kPlane ? from.index : kNoHit;
   uint skip_sphere = from.primitive == kSphere && dot(from.normal, n) > 0.0 ? from.index : kNoHit;
   for (uint i = 0u; i < globals.counts.x; ++i) {
+    if (is_height_field(planes[i], fields)) {  // a field shadows itself: never skipped
+      vec2 q;
+      if (trace_height_field(i, o, l, kInfinity, true, q) > 0.0) return true;
+      continue;
+    }
     if (i == skip_plane) continue;
     float t = intersect_plane(o, l, planes[i].point.xyz, planes[i].normal.xyz, 0.0, kInfinity);
     if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * l)) return true;

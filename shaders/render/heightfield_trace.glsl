@@ -1,0 +1,201 @@
+// Rays against a microsurface's height field, as `facet reference` traces it (cpu/heightfield.cpp):
+// bilinear cells (lib/heightfield_cell.glsl) tiled over the plane's rectangle, found front to back
+// through a quadtree of tiles over each tile's min-max MIP (renderer/gpu/microsurface_upload.hpp).
+// Silhouettes come for free: outside the rectangle there is no surface, and a ray that passes over
+// the field's bumps at a grazing angle misses them.
+// Loop bound: one step per quadtree node visited, at most FACET_HEIGHTFIELD_MAX_STEPS per ray; the
+// upload refuses a patch whose bound on visited nodes passes it (heightfield_trace_bound).
+#ifndef FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
+#define FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
+#include "lib/heightfield_cell.glsl"
+#include "render/scene_bindings.glsl"
+
+const int kHeightFieldStack = 64;  // 3 entries per level below the root: levels <= 21 (upload check)
+const float kHeightFieldFar = 1e30;
+
+// The field of a microsurface plane in its own coordinates: x, y in texels from the rectangle's
+// (-w/2, -h/2) corner, z along the normal about the stored heights' offset (world units).
+struct HeightFieldRay {
+  vec3 o, d, inv_d;
+  float t_lo, t_hi;  // the part of the ray over the rectangle
+};
+
+struct HeightField {
+  uint vertices;  // texture level of the vertex heights
+  uint bounds;    // texture level of min-max level 0 (one texel per cell); level `top` is 1 x 1
+  int top;
+  ivec2 size;     // cells (= vertices) of one tile
+  ivec2 tiles;    // tiles over the rectangle (the last may be cut)
+  int tile_levels;  // tile quadtree depth above the per-tile roots
+  vec2 range;     // z over the whole field
+};
+
+// (H1)-(H2) of docs/assets.md at texel coordinates q (vertex (i, j) at q = (i, j)) of the vertex
+// heights at texture level `vertices`: (z, dz/dx, dz/dy), z about the material's z_offset, slopes
+// per world unit (delta = texel size).
+vec3 heightfield_point(uint vertices, vec2 q, float delta) {
+  uvec4 info = texture_levels[vertices].info;
+  int w = int(info.y), h = int(info.z);
+  vec2 cell = floor(q);
+  vec2 f = q - cell;
+  int i0 = int(mod(cell.x, float(w))), j0 = int(mod(cell.y, float(h)));
+  int i1 = (i0 + 1) % w, j1 = (j0 + 1) % h;
+  float z00 = texels[info.x + uint(j0 * w + i0)].x, z10 = texels[info.x + uint(j0 * w + i1)].x;
+  float z01 = texels[info.x + uint(j1 * w + i0)].x, z11 = texels[info.x + uint(j1 * w + i1)].x;
+  float z = mix(mix(z00, z10, f.x), mix(z01, z11, f.x), f.y);
+  return vec3(z, mix(z10 - z00, z11 - z01, f.y) / delta, mix(z01 - z00, z11 - z10, f.x) / delta);
+}
+
+HeightField heightfield_of(GpuMaterial m, GpuPlane plane) {
+  HeightField f;
+  f.vertices = m.texture.x;
+  f.bounds = m.kind.z;
+  f.top = int(m.kind.w) - 1;
+  uvec4 info = texture_levels[f.vertices].info;
+  f.size = ivec2(info.yz);
+  f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
+  int most = max(f.tiles.x, f.tiles.y), levels = 0;
+  while ((1 << levels) < most) ++levels;
+  f.tile_levels = levels;
+  f.range = texels[texture_levels[f.bounds + uint(f.top)].info.x].xy;
+  return f;
+}
+
+HeightFieldRay heightfield_ray(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, float t_max) {
+  vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
+  float delta = m.albedo.w;
+  vec3 rel = o - (plane.point.xyz - plane.uv_half_size.z * t - plane.uv_half_size.w * b);
+  HeightFieldRay r;
+  r.o = vec3(dot(rel, t) / delta, dot(rel, b) / delta, dot(rel, n) - m.params.z);
+  r.d = vec3(dot(d, t) / delta, dot(d, b) / delta, dot(d, n));
+  r.inv_d = 1.0 / r.d;
+  vec2 extent = 2.0 * plane.uv_half_size.zw / delta;
+  r.t_lo = 0.0;
+  r.t_hi = t_max;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (r.d[axis] == 0.0) {
+      if (!(r.o[axis] >= 0.0 && r.o[axis] <= extent[axis])) r.t_hi = -1.0;
+      continue;
+    }
+    float ta = -r.o[axis] * r.inv_d[axis], tb = (extent[axis] - r.o[axis]) * r.inv_d[axis];
+    r.t_lo = max(r.t_lo, min(ta, tb));
+    r.t_hi = min(r.t_hi, max(ta, tb));
+  }
+  return r;
+}
+
+// The t-interval where o + t d lies in [lo, hi] along one axis (d = 0: all t or none).
+vec2 heightfield_slab(float o, float d, float inv_d, float lo, float hi) {
+  if (d == 0.0) return o >= lo && o <= hi ? vec2(-kHeightFieldFar, kHeightFieldFar) : vec2(kHeightFieldFar, -kHeightFieldFar);
+  float ta = (lo - o) * inv_d, tb = (hi - o) * inv_d;
+  return d > 0.0 ? vec2(ta, tb) : vec2(tb, ta);
+}
+
+// A node: (level, i, j, tile). Levels above `top` are groups of 2^(level - top) tiles squared at
+// (i, j); levels up to `top` are node (i, j) of the min-max MIP of tile `tile` (= ty tiles.x + tx).
+// Its extent in texels: (x_lo, x_hi, y_lo, y_hi).
+vec4 heightfield_extent(HeightField f, ivec4 n) {
+  if (n.x > f.top) {
+    int g = n.x - f.top;
+    return vec4(float(n.y << g) * float(f.size.x), float(min((n.y + 1) << g, f.tiles.x)) * float(f.size.x),
+                float(n.z << g) * float(f.size.y), float(min((n.z + 1) << g, f.tiles.y)) * float(f.size.y));
+  }
+  vec2 base = vec2(n.w % f.tiles.x, n.w / f.tiles.x) * vec2(f.size);
+  return vec4(base.x + float(n.y << n.x), base.x + float(min((n.y + 1) << n.x, f.size.x)),
+              base.y + float(n.z << n.x), base.y + float(min((n.z + 1) << n.x, f.size.y)));
+}
+
+// (min, max) of the heights under a node, empty (min > max) for a node outside its level.
+vec2 heightfield_node_bounds(HeightField f, ivec4 n) {
+  if (n.x > f.top) return f.range;
+  uvec4 info = texture_levels[f.bounds + uint(n.x)].info;
+  if (n.y >= int(info.y) || n.z >= int(info.z)) return vec2(1.0, -1.0);
+  return texels[info.x + uint(n.z) * info.y + uint(n.y)].xy;
+}
+
+// Where the ray enters the node's box (x, y extent by z bounds), or kHeightFieldFar if it misses it before
+// `best`; margin_z widens the z bounds against the ray's rounding.
+float heightfield_enter(HeightField f, HeightFieldRay r, ivec4 n, float best, float margin_z) {
+  vec4 e = heightfield_extent(f, n);
+  vec2 z = heightfield_node_bounds(f, n);
+  if (z.x > z.y) return kHeightFieldFar;
+  vec2 tx = heightfield_slab(r.o.x, r.d.x, r.inv_d.x, e.x, e.y);
+  vec2 ty = heightfield_slab(r.o.y, r.d.y, r.inv_d.y, e.z, e.w);
+  vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
+  float enter = max(max(tx.x, ty.x), max(tz.x, r.t_lo));
+  return enter <= min(min(tx.y, ty.y), min(tz.y, best)) ? enter : kHeightFieldFar;
+}
+
+// The child (a, b) of node n (level > 0), or level -1 if it lies outside the tile grid.
+ivec4 heightfield_child(HeightField f, ivec4 n, int a, int b) {
+  ivec4 c = ivec4(n.x - 1, 2 * n.y + a, 2 * n.z + b, n.w);
+  if (n.x <= f.top) return c;
+  int g = c.x - f.top;  // tiles per child group, as a power of two
+  if ((c.y << g) >= f.tiles.x || (c.z << g) >= f.tiles.y) return ivec4(-1);
+  return g == 0 ? ivec4(f.top, 0, 0, c.z * f.tiles.x + c.y) : c;
+}
+
+// The ray's first hit t with the field in (r.t_lo, r.t_hi) (any hit, if any_hit), or -1.
+float heightfield_search(HeightField f, HeightFieldRay r, bool any_hit) {
+  if (!(r.t_lo <= r.t_hi)) return -1.0;
+  float margin_z = 1e-5 * (abs(r.o.z) + abs(f.range.x) + abs(f.range.y));
+  float best = r.t_hi, found = -1.0;
+  ivec4 stack_node[kHeightFieldStack];
+  float stack_enter[kHeightFieldStack];
+  int size = 0;
+  ivec4 node = ivec4(f.top + f.tile_levels, 0, 0, 0);
+  float enter = heightfield_enter(f, r, node, best, margin_z);
+  bool current = enter < kHeightFieldFar;
+  // One node per step, nearest first: the nearest child is descended into directly and its siblings
+  // are pushed far to near, so nodes are visited in the order of a pop-the-nearest traversal.
+  for (int step = 0; step < FACET_HEIGHTFIELD_MAX_STEPS; ++step) {
+    if (!current) {
+      if (size == 0) break;
+      --size;
+      node = stack_node[size];
+      enter = stack_enter[size];
+    }
+    current = false;
+    if (enter > best) continue;
+    if (node.x == 0) {
+      ivec2 tile = ivec2(node.w % f.tiles.x, node.w / f.tiles.x);
+      uvec4 info = texture_levels[f.vertices].info;
+      int i1 = node.y + 1 == f.size.x ? 0 : node.y + 1, j1 = node.z + 1 == f.size.y ? 0 : node.z + 1;
+      uint row0 = info.x + uint(node.z * f.size.x), row1 = info.x + uint(j1 * f.size.x);
+      vec4 z = vec4(texels[row0 + uint(node.y)].x, texels[row0 + uint(i1)].x, texels[row1 + uint(node.y)].x,
+                    texels[row1 + uint(i1)].x);
+      float t = heightfield_cell_hit(r.o, r.d, r.inv_d, float(tile.x * f.size.x + node.y),
+                                     float(tile.y * f.size.y + node.z), z, r.t_lo, best);
+      if (t > 0.0 && t <= best) {
+        best = found = t;
+        if (any_hit) return t;
+      }
+      continue;
+    }
+    // The four children, sorted far to near by where the ray enters them.
+    ivec4 c[4] = ivec4[4](heightfield_child(f, node, 0, 0), heightfield_child(f, node, 1, 0),
+                          heightfield_child(f, node, 0, 1), heightfield_child(f, node, 1, 1));
+    float e[4] = float[4](c[0].x < 0 ? kHeightFieldFar : heightfield_enter(f, r, c[0], best, margin_z),
+                          c[1].x < 0 ? kHeightFieldFar : heightfield_enter(f, r, c[1], best, margin_z),
+                          c[2].x < 0 ? kHeightFieldFar : heightfield_enter(f, r, c[2], best, margin_z),
+                          c[3].x < 0 ? kHeightFieldFar : heightfield_enter(f, r, c[3], best, margin_z));
+#define FACET_HF_ORDER(a, b)                                 \
+  if (e[a] < e[b]) {                                         \
+    float te = e[a]; e[a] = e[b]; e[b] = te;                 \
+    ivec4 tc = c[a]; c[a] = c[b]; c[b] = tc;                 \
+  }
+    FACET_HF_ORDER(0, 1) FACET_HF_ORDER(2, 3) FACET_HF_ORDER(0, 2) FACET_HF_ORDER(1, 3) FACET_HF_ORDER(1, 2)
+#undef FACET_HF_ORDER
+    // e is now descending: e[3] is the nearest; skipped children carry kHeightFieldFar.
+    if (e[3] == kHeightFieldFar) continue;
+    if (e[0] < kHeightFieldFar) { stack_node[size] = c[0]; stack_enter[size++] = e[0]; }
+    if (e[1] < kHeightFieldFar) { stack_node[size] = c[1]; stack_enter[size++] = e[1]; }
+    if (e[2] < kHeightFieldFar) { stack_node[size] = c[2]; stack_enter[size++] = e[2]; }
+    node = c[3];
+    enter = e[3];
+    current = true;
+  }
+  return found;
+}
+
+#endif
