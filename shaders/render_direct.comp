@@ -30,9 +30,9 @@ layout(constant_id = 5) const uint kDiffractionMethod = 0u;
 layout(constant_id = 6) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
 layout(constant_id = 7) const bool kHasSpheres = true;
 layout(constant_id = 8) const bool kHasTriangles = true;
-// naive and ss:K see a microsurface as the reference does: its height field, traced (filtered where
-// the footprint is within a few texels, radiance()).
-const bool kTracesHeightFields = kHasMicrosurface && kTextureMethod == 0u;
+// naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
+// traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
+const bool kTracesHeightFields = kHasMicrosurface && kTextureMethod != 1u && kTextureMethod != 2u;
 
 #include "lib/camera.glsl"
 #include "lib/lambert.glsl"
@@ -42,6 +42,7 @@ const bool kTracesHeightFields = kHasMicrosurface && kTextureMethod == 0u;
 #include "render/texture_sampling.glsl"
 #include "render/microsurface_shading.glsl"
 #include "render/trace.glsl"
+#include "render/microsurface_field.glsl"
 
 vec3 camera_ray(vec2 film) {
   return camera_ray_direction(globals.camera_forward.xyz, globals.camera_right.xyz, globals.camera_up.xyz, film,
@@ -49,24 +50,22 @@ vec3 camera_ray(vec2 film) {
 }
 
 // Radiance of the hit `hit` of the camera ray o + t d through `film` (pixels); `pixel_step` is the film
-// distance to the neighbouring rays whose hits span the texture footprint; `fields`: microsurface
-// planes are their traced height fields (render/heightfield_trace.glsl), else flat rectangles.
-vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step, bool fields) {
+// distance to the neighbouring rays whose hits span the texture footprint.
+vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   if (hit.material == kNoHit) return globals.background.rgb;
   vec3 p = o + hit.t * d;
   vec3 n = normalize(hit.normal);
   if (dot(n, d) > 0.0) n = -n;
   vec3 l = globals.light_direction.xyz;
-  // Offset the shadow ray's origin by a distance relative to the scene's scale at p; a height field's
-  // hits are exact to a few float ulps, and its detail is finer than the macro-surfaces' offset.
-  vec3 shadow_origin = p + n * ((hit.primitive == kHeightField ? 1e-5 : 1e-4) * max(1.0, length(p)));
-  float visibility = dot(n, l) > 0.0 && occluded(shadow_origin, l, hit, n, fields) ? 0.0 : 1.0;
   GpuMaterial m = materials[hit.material];
   if (kHasMicrosurface && hit.primitive == kHeightField)
-    return microsurface_traced_radiance(m, planes[hit.index], hit.barycentric, n, -d, l, visibility);
+    return microsurface_field_radiance(m, hit, o, d, p, n, camera_ray(film + vec2(pixel_step, 0.0)),
+                                       camera_ray(film + vec2(0.0, pixel_step)), l);
+  // Offset the shadow ray's origin by a distance relative to the scene's scale at p.
+  float visibility = dot(n, l) > 0.0 && occluded(p + n * (1e-4 * max(1.0, length(p))), l, hit, n, kTracesHeightFields) ? 0.0 : 1.0;
   if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE)  // finite planes only (scene loader)
     return microsurface_radiance(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
-                                 camera_ray(film + vec2(0.0, pixel_step)), l, visibility);
+                                 camera_ray(film + vec2(0.0, pixel_step)), l, visibility, false);
   if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
     return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
                                visibility, globals.ambient.rgb);
@@ -86,30 +85,11 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step, bool fields) {
   return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb) + diffracted;
 }
 
-// Radiance along the camera ray through `film`. `filtered` hands a microsurface over from its
-// statistics to its traced field where the pixel's footprint shrinks to the texels
-// (microsurface_trace_weight, docs/microsurface_filtering.md "Across scales"): a blend of both over one
-// texel of footprint width, so no seam moves with the camera.
+// Radiance along the camera ray through `film`.
 vec3 radiance(vec2 film, float pixel_step) {
   vec3 o = globals.camera_origin.xyz;
   vec3 d = camera_ray(film);
-  // Pass 0 traces as the method does, pass 1 (filtered near a microsurface only) the fields. One call
-  // site of trace and shade: lavapipe compiles each inlined copy of the traversal anew.
-  float traced_weight = 0.0;
-  vec3 sum = vec3(0.0);
-  for (int pass = 0; pass < 2; ++pass) {
-    if (pass == 1 && traced_weight <= 0.0) break;
-    bool fields = pass == 1 || kTracesHeightFields;
-    Hit hit = trace(o, d, 0.0, kInfinity, fields);
-    if (pass == 0 && kHasMicrosurface && kTextureMethod >= 3u && hit.material != kNoHit && hit.primitive == kPlane &&
-        materials[hit.material].kind.x == FACET_MATERIAL_MICROSURFACE)
-      traced_weight = microsurface_trace_weight(materials[hit.material], planes[hit.index], o, d, o + hit.t * d,
-                                                camera_ray(film + vec2(pixel_step, 0.0)),
-                                                camera_ray(film + vec2(0.0, pixel_step)));
-    float weight = pass == 0 ? 1.0 - traced_weight : traced_weight;
-    if (weight > 0.0) sum += weight * shade(o, d, hit, film, pixel_step, fields);
-  }
-  return sum;
+  return shade(o, d, trace(o, d, 0.0, kInfinity, kTracesHeightFields), film, pixel_step);
 }
 
 // The tile position of this invocation: its workgroup renders block g s mod n (g: the workgroup's

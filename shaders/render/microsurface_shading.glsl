@@ -144,7 +144,7 @@ float microsurface_trace_weight(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, v
 // filtered) hit at p by the ray o + t d; d_dx, d_dy: the rays through the neighbouring pixel positions
 // (the footprint); visibility of the light from p.
 vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy,
-                           vec3 l_world, float visibility) {
+                           vec3 l_world, float visibility, bool traced) {
   vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
   float delta = m.albedo.w;
   MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy);
@@ -162,7 +162,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p
   // field: the coarsest moment level); the box of that spread, sqrt(12) sigma_h cot(theta_v) long, is
   // added to the footprint axis closer to the view's azimuth. Zero straight down, large at grazing views.
   vec4 field = texels[texture_levels[m.texture.x + m.texture.y].info.x];
-  vec2 parallax = sqrt(12.0) * sqrt(max(field.y - field.x * field.x, 0.0)) * (v.xy / v.z) / (size * delta);
+  vec2 parallax = traced ? vec2(0.0) : sqrt(12.0) * sqrt(max(field.y - field.x * field.x, 0.0)) * (v.xy / v.z) / (size * delta);
   float along_x = abs(dot(duv_dx, parallax)) * length(duv_dy), along_y = abs(dot(duv_dy, parallax)) * length(duv_dx);
   if (along_x >= along_y)
     duv_dx += dot(duv_dx, parallax) >= 0.0 ? parallax : -parallax;
