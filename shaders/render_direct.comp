@@ -89,7 +89,9 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
 vec3 radiance(vec2 film, float pixel_step) {
   vec3 o = globals.camera_origin.xyz;
   vec3 d = camera_ray(film);
-  return shade(o, d, trace(o, d, 0.0, kInfinity, kTracesHeightFields), film, pixel_step);
+  Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields, kTextureMethod >= 3u,
+                  camera_ray(film + vec2(pixel_step, 0.0)), camera_ray(film + vec2(0.0, pixel_step)));
+  return shade(o, d, hit, film, pixel_step);
 }
 
 // The tile position of this invocation: its workgroup renders block g s mod n (g: the workgroup's

@@ -56,6 +56,69 @@ uint append_height_bounds(TextureData& data, uint vertex_level) {
   return first;
 }
 
+// The bounds of min-max chain `bounds` (count levels) over each node's 3 x 3 neighbourhood, wrapped
+// (the field repeats): they hold every smoothed surface of (T2) of a level below the node's. Each
+// node of such a level lies inside the node (the quadtree nests) and its corner heights average the
+// nodes of its level around the corner, which lie in the node or its neighbours. (The surface over
+// the traversal's leaf nodes is bounded by its own corners, render/heightfield_trace.glsl.)
+void append_dilated_bounds(TextureData& data, uint bounds, uint count) {
+  for (uint l = 0; l < count; ++l) {
+    const uvec4 info = data.levels[bounds + l].info;
+    const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
+    data.levels.push_back({uvec4(data.texels.size(), w, h, l)});
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            const int ni = ((i + di) % w + w) % w, nj = ((j + dj) % h + h) % h;
+            const vec4 b = data.texels[info.x + static_cast<size_t>(nj) * w + ni];
+            lo = std::min(lo, b.x);
+            hi = std::max(hi, b.y);
+          }
+        data.texels.push_back(vec4(lo, hi, 0.0f, 0.0f));
+      }
+  }
+}
+
+// The corner heights of the smoothed surfaces (T2), levels 1 .. count - 1: corner (i, j) of level l
+// is the mean of the field over the (up to) four level-l nodes around it, wrapped, by area (the
+// vertex heights as stored; level 0 is the field itself).
+void append_corner_heights(TextureData& data, uint vertex_level, uint count) {
+  const uvec4 info = data.levels[vertex_level].info;
+  const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
+  const auto z = [&](int i, int j) -> double { return data.texels[info.x + static_cast<size_t>(j % h) * w + (i % w)].x; };
+  const std::vector<glm::uvec2> sizes = mip_chain_sizes(w, h);
+  // Per node of the current level: the sum of its cells' mean heights and its cell count.
+  std::vector<double> sum(static_cast<size_t>(w) * h), cells(sum.size(), 1.0);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) sum[static_cast<size_t>(j) * w + i] = 0.25 * (z(i, j) + z(i + 1, j) + z(i, j + 1) + z(i + 1, j + 1));
+  for (uint l = 1; l < count; ++l) {
+    const int fw = static_cast<int>(sizes[l - 1].x), fh = static_cast<int>(sizes[l - 1].y);
+    const int lw = static_cast<int>(sizes[l].x), lh = static_cast<int>(sizes[l].y);
+    std::vector<double> s(static_cast<size_t>(lw) * lh, 0.0), c(s.size(), 0.0);
+    for (int j = 0; j < fh; ++j)
+      for (int i = 0; i < fw; ++i) {
+        const size_t from = static_cast<size_t>(j) * fw + i, to = static_cast<size_t>(j / 2) * lw + i / 2;
+        s[to] += sum[from];
+        c[to] += cells[from];
+      }
+    sum = std::move(s);
+    cells = std::move(c);
+    data.levels.push_back({uvec4(data.texels.size(), lw, lh, l - 1)});  // the chain starts at level 1
+    for (int j = 0; j < lh; ++j)
+      for (int i = 0; i < lw; ++i) {
+        double total = 0.0, area = 0.0;
+        for (int k = 0; k < 4; ++k) {
+          const int ni = (i - (k & 1) + lw) % lw, nj = (j - (k >> 1) + lh) % lh;
+          total += sum[static_cast<size_t>(nj) * lw + ni];
+          area += cells[static_cast<size_t>(nj) * lw + ni];
+        }
+        data.texels.push_back(vec4(static_cast<float>(total / area), 0.0f, 0.0f, 0.0f));
+      }
+  }
+}
+
 int ceil_log2(std::int64_t n) {
   int levels = 0;
   while ((std::int64_t{1} << levels) < n) ++levels;
@@ -137,6 +200,8 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
   append_mip_chain(data, field.width, field.height, level0.albedo);
   const uint count = static_cast<uint>(mip_chain_sizes(field.width, field.height).size());
   const uint bounds = append_height_bounds(data, first);
+  append_dilated_bounds(data, bounds, count);
+  append_corner_heights(data, first, count);
 
   const auto add_map = [&](const std::optional<Colormap>& map) {
     if (!map) return FACET_NO_COLORMAP;

@@ -7,8 +7,9 @@
 //     slopes   (E[s_x^2], E[s_y^2], E[s_x s_y], 0)    slopes s = grad z in world units,
 //     albedo   (mean height_colormap(z) slope_colormap(|s|) over the patch, 0), for colormip.
 // Coarser levels are box means (append_mip_chain), i.e. the moments over the covered patches.
-// Then the min-max MIP of the cells (min, max, -, -) for the tracer (render/heightfield_trace.glsl),
-// `count` levels of the same sizes, built on the CPU.
+// Then, for the tracer (render/heightfield_trace.glsl), built on the CPU: the min-max MIP of the cells
+// (min, max, -, -), `count` levels of the same sizes; the same bounds dilated over 3 x 3 nodes
+// (`count` levels); the corner heights of the smoothed surfaces of levels 1 .. count - 1 (z, -, -, -).
 #pragma once
 
 #include <cstdint>

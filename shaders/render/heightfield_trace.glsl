@@ -3,8 +3,11 @@
 // through a quadtree of tiles over each tile's min-max MIP (renderer/gpu/microsurface_upload.hpp).
 // Silhouettes come for free: outside the rectangle there is no surface, and a ray that passes over
 // the field's bumps at a grazing angle misses them.
+// A ray may instead trace the field smoothed to level lambda = leaf + blend (docs/microsurface_filtering.md
+// (T2)): bilinear over the level-`leaf` nodes between their corner heights, blended with the next
+// level's surface; the traversal then stops at that level.
 // Loop bound: one step per quadtree node visited, at most FACET_HEIGHTFIELD_MAX_STEPS per ray; the
-// upload refuses a patch whose bound on visited nodes passes it (heightfield_trace_bound).
+// pass refuses a patch whose bound on visited nodes passes it (heightfield_trace_cost).
 #ifndef FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
 #define FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
 #include "lib/heightfield_cell.glsl"
@@ -23,6 +26,10 @@ struct HeightFieldRay {
 struct HeightField {
   uint vertices;  // texture level of the vertex heights
   uint bounds;    // texture level of min-max level 0 (one texel per cell); level `top` is 1 x 1
+  uint dilated;   // the same bounds over each node's 3 x 3 neighbourhood: they hold the smoothed surfaces
+  uint corners;   // corners + l: the level-l surface's corner heights, l >= 1 (level 0: the vertices)
+  int leaf;       // the level whose nodes the ray intersects (0: cells)
+  float blend;    // toward the level leaf + 1 surface, in [0, 1)
   int top;
   ivec2 size;     // cells (= vertices) of one tile
   ivec2 tiles;    // tiles over the rectangle (the last may be cut)
@@ -46,11 +53,16 @@ vec3 heightfield_point(uint vertices, vec2 q, float delta) {
   return vec3(z, mix(z10 - z00, z11 - z01, f.y) / delta, mix(z01 - z00, z11 - z10, f.x) / delta);
 }
 
-HeightField heightfield_of(GpuMaterial m, GpuPlane plane) {
+// The field of microsurface m on `plane`, smoothed to level lambda (0: the field itself).
+HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   HeightField f;
   f.vertices = m.texture.x;
   f.bounds = m.kind.z;
+  f.dilated = m.kind.z + m.kind.w;
+  f.corners = m.kind.z + 2u * m.kind.w - 1u;
   f.top = int(m.kind.w) - 1;
+  f.leaf = min(int(lambda), f.top);
+  f.blend = f.leaf < f.top ? lambda - float(f.leaf) : 0.0;
   uvec4 info = texture_levels[f.vertices].info;
   f.size = ivec2(info.yz);
   f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
@@ -108,9 +120,35 @@ vec4 heightfield_extent(HeightField f, ivec4 n) {
 // (min, max) of the heights under a node, empty (min > max) for a node outside its level.
 vec2 heightfield_node_bounds(HeightField f, ivec4 n) {
   if (n.x > f.top) return f.range;
-  uvec4 info = texture_levels[f.bounds + uint(n.x)].info;
+  uvec4 info = texture_levels[(f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(n.x)].info;
   if (n.y >= int(info.y) || n.z >= int(info.z)) return vec2(1.0, -1.0);
   return texels[info.x + uint(n.z) * info.y + uint(n.y)].xy;
+}
+
+// The level-l surface's height at corner (i, j) of the level's node grid, i <= width, j <= height
+// (the last corner is the first: the field repeats).
+float heightfield_corner(HeightField f, int level, int i, int j) {
+  uvec4 info = texture_levels[level == 0 ? f.vertices : f.corners + uint(level)].info;
+  int w = int(info.y), h = int(info.z);
+  return texels[info.x + uint((j == h ? 0 : j) * w + (i == w ? 0 : i))].x;
+}
+
+// The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e):
+// the leaf level's corners blended with the next level's surface at the same points (a bilinear
+// patch of the parent node, so the blend is bilinear over n and continuous across nodes).
+vec4 heightfield_leaf_corners(HeightField f, ivec4 n, vec4 e) {
+  vec4 z = vec4(heightfield_corner(f, n.x, n.y, n.z), heightfield_corner(f, n.x, n.y + 1, n.z),
+                heightfield_corner(f, n.x, n.y, n.z + 1), heightfield_corner(f, n.x, n.y + 1, n.z + 1));
+  if (f.blend <= 0.0) return z;
+  ivec4 parent = ivec4(n.x + 1, n.y >> 1, n.z >> 1, n.w);
+  vec4 pe = heightfield_extent(f, parent);
+  vec4 pz = vec4(heightfield_corner(f, parent.x, parent.y, parent.z), heightfield_corner(f, parent.x, parent.y + 1, parent.z),
+                 heightfield_corner(f, parent.x, parent.y, parent.z + 1),
+                 heightfield_corner(f, parent.x, parent.y + 1, parent.z + 1));
+  vec2 u = (e.xy - pe.x) / (pe.y - pe.x), v = (e.zw - pe.z) / (pe.w - pe.z);
+  vec4 coarse = vec4(heightfield_bilinear(pz, u.x, v.x), heightfield_bilinear(pz, u.y, v.x),
+                     heightfield_bilinear(pz, u.x, v.y), heightfield_bilinear(pz, u.y, v.y));
+  return mix(z, coarse, f.blend);
 }
 
 // Where the ray enters the node's box (x, y extent by z bounds), or kHeightFieldFar if it misses it before
@@ -118,6 +156,12 @@ vec2 heightfield_node_bounds(HeightField f, ivec4 n) {
 float heightfield_enter(HeightField f, HeightFieldRay r, ivec4 n, float best, float margin_z) {
   vec4 e = heightfield_extent(f, n);
   vec2 z = heightfield_node_bounds(f, n);
+  if (n.x == f.leaf && (f.leaf > 0 || f.blend > 0.0) && z.x <= z.y) {
+    // A smoothed leaf lies between its corners (a bilinear patch), which the next level's corners
+    // reach beyond the dilated bounds.
+    vec4 c = heightfield_leaf_corners(f, n, e);
+    z = vec2(min(min(c.x, c.y), min(c.z, c.w)), max(max(c.x, c.y), max(c.z, c.w)));
+  }
   if (z.x > z.y) return kHeightFieldFar;
   vec2 tx = heightfield_slab(r.o.x, r.d.x, r.inv_d.x, e.x, e.y);
   vec2 ty = heightfield_slab(r.o.y, r.d.y, r.inv_d.y, e.z, e.w);
@@ -157,15 +201,17 @@ float heightfield_search(HeightField f, HeightFieldRay r, bool any_hit) {
     }
     current = false;
     if (enter > best) continue;
-    if (node.x == 0) {
-      ivec2 tile = ivec2(node.w % f.tiles.x, node.w / f.tiles.x);
-      uvec4 info = texture_levels[f.vertices].info;
-      int i1 = node.y + 1 == f.size.x ? 0 : node.y + 1, j1 = node.z + 1 == f.size.y ? 0 : node.z + 1;
-      uint row0 = info.x + uint(node.z * f.size.x), row1 = info.x + uint(j1 * f.size.x);
-      vec4 z = vec4(texels[row0 + uint(node.y)].x, texels[row0 + uint(i1)].x, texels[row1 + uint(node.y)].x,
-                    texels[row1 + uint(i1)].x);
-      float t = heightfield_cell_hit(r.o, r.d, r.inv_d, float(tile.x * f.size.x + node.y),
-                                     float(tile.y * f.size.y + node.z), z, r.t_lo, best);
+    if (node.x == f.leaf) {
+      vec4 e = heightfield_extent(f, node);
+      vec4 z = heightfield_leaf_corners(f, node, e);
+      float t;
+      if (node.x == 0) {  // a cell: as the reference tests it, in texels
+        t = heightfield_cell_hit(r.o, r.d, r.inv_d, e.x, e.z, z, r.t_lo, best);
+      } else {  // a node: in its own unit square
+        vec2 s = e.yw - e.xz;
+        vec3 o = vec3((r.o.xy - e.xz) / s, r.o.z), d = vec3(r.d.xy / s, r.d.z);
+        t = heightfield_cell_hit(o, d, 1.0 / d, 0.0, 0.0, z, r.t_lo, best);
+      }
       if (t > 0.0 && t <= best) {
         best = found = t;
         if (any_hit) return t;

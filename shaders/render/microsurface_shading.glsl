@@ -12,6 +12,7 @@
 #define FACET_RENDER_MICROSURFACE_SHADING_GLSL
 #include "lib/beckmann_facet.glsl"
 #include "lib/lambert.glsl"
+#include "lib/analytic_intersect.glsl"
 #include "lib/microsurface_filter.glsl"
 #include "lib/texture_footprint.glsl"
 #include "render/heightfield_trace.glsl"
@@ -138,6 +139,16 @@ MicrosurfaceFootprint microsurface_footprint(GpuMaterial m, GpuPlane plane, vec3
 float microsurface_trace_weight(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy) {
   MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy);
   return clamp(2.0 - max(length(fp.duv_dx * fp.size), length(fp.duv_dy * fp.size)), 0.0, 1.0);
+}
+
+// The level filtered traces the field at for the ray o + t d (T2): the MIP level of the footprint's
+// taps where the ray meets the flat rectangle, so features wider than about half the footprint are
+// traced and the rest are the statistics' (0: the field itself, also where the ray misses the plane).
+float microsurface_trace_level(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 d_dx, vec3 d_dy) {
+  float t = intersect_plane(o, d, plane.point.xyz, plane.normal.xyz, 0.0, 1e30);
+  if (t <= 0.0) return 0.0;
+  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, o + t * d, d_dx, d_dy);
+  return anisotropic_footprint(fp.duv_dx, fp.duv_dy, fp.size, float(m.texture.y), kMaxAnisotropicTaps).lod;
 }
 
 // The radiance of microsurface `m` on `plane` by its footprint's statistics (methods mip, colormip,

@@ -32,11 +32,12 @@ bool is_height_field(GpuPlane plane, bool fields) {
   return kHasMicrosurface && fields && materials[plane.material.x].kind.x == FACET_MATERIAL_MICROSURFACE;
 }
 
-// The first hit (any hit) of o + t d, t in (0, t_max), with the height field of microsurface plane i, or -1.
-float trace_height_field(uint i, vec3 o, vec3 d, float t_max, bool any_hit, out vec2 q) {
+// The first hit (any hit) of o + t d, t in (0, t_max), with the height field of microsurface plane i
+// smoothed to level lambda (0: the field), or -1.
+float trace_height_field(uint i, vec3 o, vec3 d, float t_max, bool any_hit, float lambda, out vec2 q) {
   GpuMaterial m = materials[planes[i].material.x];
   HeightFieldRay r = heightfield_ray(m, planes[i], o, d, t_max);
-  float t = heightfield_search(heightfield_of(m, planes[i]), r, any_hit);
+  float t = heightfield_search(heightfield_of(m, planes[i], lambda), r, any_hit);
   q = clamp(r.o.xy + t * r.d.xy, vec2(0.0), 2.0 * planes[i].uv_half_size.zw / m.albedo.w);
   return t;
 }
@@ -77,12 +78,15 @@ bool inside_plane_rectangle(GpuPlane plane, vec3 p) {
   return abs(dot(r, plane.tangent.xyz)) <= plane.uv_half_size.z && abs(dot(r, bitangent)) <= plane.uv_half_size.w;
 }
 
-Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields) {
+// With `smoothed` (filtered), each field is traced at the level its footprint spans (T2), from the
+// rays d_dx, d_dy through the neighbouring pixels.
+Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, vec3 d_dx, vec3 d_dy) {
   Hit hit = Hit(t_max, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0));
   for (uint i = 0u; i < globals.counts.x; ++i) {
     if (is_height_field(planes[i], fields)) {
       vec2 q;
-      float t = trace_height_field(i, o, d, hit.t, false, q);
+      float lambda = smoothed ? microsurface_trace_level(materials[planes[i].material.x], planes[i], o, d, d_dx, d_dy) : 0.0;
+      float t = trace_height_field(i, o, d, hit.t, false, lambda, q);
       if (t > t_min) {
         GpuMaterial m = materials[planes[i].material.x];
         vec3 s = heightfield_point(m.texture.x, q, m.albedo.w);
@@ -116,7 +120,7 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields) {
   for (uint i = 0u; i < globals.counts.x; ++i) {
     if (is_height_field(planes[i], fields)) {  // a field shadows itself: never skipped
       vec2 q;
-      if (trace_height_field(i, o, l, kInfinity, true, q) > 0.0) return true;
+      if (trace_height_field(i, o, l, kInfinity, true, 0.0, q) > 0.0) return true;
       continue;
     }
     if (i == skip_plane) continue;
