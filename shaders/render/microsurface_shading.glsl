@@ -77,6 +77,19 @@ vec3 microsurface_traced_radiance(GpuMaterial m, GpuPlane plane, vec2 q, vec3 n,
                  (beckmann_facet_specular(n, plane.tangent.xyz, v, l, m.params.xy) * visibility);
 }
 
+// The Beckmann lobe on the footprint's slopes in the frame of its mean facet (normal n of the mean
+// slope, tangent the plane's projected onto it): the LEAN convolution about slope 0 there. A footprint
+// on a bump's flank is a tilted patch; in the plane's slope space its lobe would be divided by the
+// plane's cos(theta_v), which at grazing views is far below the patch's own (radiance 10x too high on
+// scenes/microsurface_horizon.json). v, l in the plane frame.
+float microsurface_mean_facet_specular(MicrosurfaceStatistics stats, vec2 alpha, vec3 l, vec3 v) {
+  vec3 n = microsurface_normal(stats.s_mean);
+  vec3 t = normalize(vec3(1.0, 0.0, 0.0) - n.x * n), b = cross(n, t);
+  MicrosurfaceStatistics centred = stats;
+  centred.s_mean = vec2(0.0);
+  return microsurface_specular(centred, alpha, vec3(dot(l, t), dot(l, b), dot(l, n)), vec3(dot(v, t), dot(v, b), dot(v, n)));
+}
+
 // The filtered radiance of a footprint with Gaussian statistics `stats` (docs/microsurface_filtering.md
 // eq. M7): E/pi V H_lit S_cos + E_amb/pi H S + V E R f_spec.
 vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats, vec3 v, vec3 l, float visibility) {
@@ -111,7 +124,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
   vec3 radiance = FACET_INV_PI * (globals.light_irradiance.rgb * visibility * heights_lit * slope_cos_sum +
                                   globals.ambient.rgb * heights * slope_sum);
   if (m.kind.y == 0u) return radiance;
-  return radiance + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_specular(stats, m.params.xy, l, v) * visibility);
+  return radiance + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_mean_facet_specular(stats, m.params.xy, l, v) * visibility);
 }
 
 // The pixel's footprint on microsurface `m` on `plane`, hit at p by the ray o + t d; d_dx, d_dy: the
