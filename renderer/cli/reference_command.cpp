@@ -1,5 +1,4 @@
 // facet reference SCENE -o REF.exr: the CPU reference image (docs/reference.md), to EXR + PNG preview.
-#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -9,7 +8,7 @@
 #include "cli/frame_output.hpp"
 #include "common/interrupt.hpp"
 #include "common/progress.hpp"
-#include "cpu/reference_renderer.hpp"
+#include "frames/prepared_frames.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace facet::cli {
@@ -20,10 +19,8 @@ struct ReferenceCommandOptions {
   std::filesystem::path scene;
   ResolutionOptions resolution;
   FrameOption frame;
-  OutputOptions output;
-  int grid = 32;
-  std::int64_t seed = 1;
-  int threads = 0;
+  frames::FrameFile output;
+  frames::ReferenceMethod reference;
 };
 
 int run_reference(const ReferenceCommandOptions& options) {
@@ -32,30 +29,24 @@ int run_reference(const ReferenceCommandOptions& options) {
   options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
 
-  cpu::ReferenceOptions render;
-  render.width = width;
-  render.height = height;
-  render.grid = options.grid;
-  render.seed = static_cast<std::uint64_t>(options.seed);
-  render.threads = options.threads;
-  render.cancel = &stop_on_interrupt();  // polled between rows, then throws: no file is written
+  frames::PreparedFrames prepared(scene, options.reference, nullptr);
   std::unique_ptr<ProgressBar> progress;
-  render.progress = [&](std::int64_t done, std::int64_t total) {
+  frames::FrameRequest request;
+  request.frame = options.frame.frame;
+  request.since = start;
+  request.cancel = &stop_on_interrupt();  // polled between rows, then throws: no file is written
+  request.progress = [&](std::int64_t done, std::int64_t total) {
     if (!progress) progress = std::make_unique<ProgressBar>("reference", total);
     progress->update(done);
   };
-  const Image image = cpu::render_reference(scene, render);
+  const frames::Frame frame = prepared.render(scene.camera, width, height, request);
   if (progress) progress->finish();
 
-  const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  ExrMetadata metadata = frame_metadata(scene, "reference", static_cast<std::int64_t>(options.grid) * options.grid,
-                                        "cpu", 0.0, wall_ms);
-  add_reference_metadata(metadata, options.grid, options.seed);
-  options.frame.annotate(metadata);
-  write_frame(options.output, image, metadata);
-  const double samples = static_cast<double>(width) * height * options.grid * options.grid;
-  std::cerr << "facet: reference " << width << "x" << height << ", grid " << options.grid << "x" << options.grid
-            << " in " << wall_ms << " ms (" << samples / (wall_ms * 1e3) << " M samples/s) -> "
+  frames::write_frame(options.output, frame.image, frame.metadata);
+  const int grid = options.reference.grid;
+  const double samples = static_cast<double>(width) * height * grid * grid;
+  std::cerr << "facet: reference " << width << "x" << height << ", grid " << grid << "x" << grid << " in "
+            << frame.wall_ms << " ms (" << samples / (frame.wall_ms * 1e3) << " M samples/s) -> "
             << options.output.path.string() << "\n";
   return 0;
 }
@@ -66,13 +57,13 @@ void add_reference_command(CLI::App& app, Action& action) {
   auto* command = app.add_subcommand("reference", "Render the CPU reference image of a scene to an OpenEXR file");
   auto options = std::make_shared<ReferenceCommandOptions>();
   command->add_option("scene", options->scene, "Scene file (JSON, see scenes/README.md)")->required();
-  command->add_option("--grid", options->grid, "N: an N x N jittered grid of primary rays per pixel")
+  command->add_option("--grid", options->reference.grid, "N: an N x N jittered grid of primary rays per pixel")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
-  command->add_option("--seed", options->seed, "Seed of the jitter")
+  command->add_option("--seed", options->reference.seed, "Seed of the jitter")
       ->check(CLI::Range(std::int64_t{0}, std::int64_t{2147483647}))
       ->capture_default_str();
-  command->add_option("--threads", options->threads, "Worker threads (0: all cores)")
+  command->add_option("--threads", options->reference.threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   add_resolution_options(*command, options->resolution);

@@ -8,7 +8,7 @@
 #include "cli/frame_output.hpp"
 #include "common/error.hpp"
 #include "common/progress.hpp"
-#include "gpu/direct_pass.hpp"
+#include "frames/prepared_frames.hpp"
 #include "scene/scene_loader.hpp"
 #include "vk/context.hpp"
 
@@ -21,7 +21,7 @@ struct RenderOptions {
   DeviceOptions device;
   ResolutionOptions resolution;
   FrameOption frame;
-  OutputOptions output;
+  frames::FrameFile output;
   std::string method = "naive";
   std::string diffraction;  // empty: the diffraction materials' own "method"
   int wavelengths = 0;      // 0: the materials' own counts
@@ -42,32 +42,24 @@ gpu::RenderMethod render_method(const RenderOptions& options) {
 }
 
 int run_render(const RenderOptions& options) {
-  auto start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   Scene scene = load_scene(options.scene);
   options.frame.apply(scene);
-  auto [width, height] = options.resolution.resolve(scene.camera);
+  const auto [width, height] = options.resolution.resolve(scene.camera);
   const gpu::RenderMethod method = render_method(options);
   vk::Context context({options.device.device, options.device.validation});
-  gpu::DirectPass pass(context, scene, method);
+  frames::PreparedFrames prepared(scene, method, &context);
   ProgressBar progress("render", gpu::tile_count(width, height));
-  gpu::RenderStats stats;
-  Image image = pass.render(scene.camera, width, height, &stats, [&](int done, int) { progress.update(done); });
+  frames::FrameRequest request;
+  request.frame = options.frame.frame;
+  request.since = start;
+  request.progress = [&](std::int64_t done, std::int64_t) { progress.update(done); };
+  const frames::Frame frame = prepared.render(scene.camera, width, height, request);
   progress.finish();
-  if (context.validation_message_count() > 0)
-    throw Error("Vulkan validation reported " + std::to_string(context.validation_message_count()) +
-                " messages; no image written");
-  double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  ExrMetadata metadata = frame_metadata(scene, method.name(), method.samples_per_axis * method.samples_per_axis, context.info().name, stats.gpu_ms, wall_ms);
-  options.frame.annotate(metadata);
-  if (pass.diffraction().most_wavelengths > 0) {  // the scene has diffraction materials
-    metadata["facet:diffraction_method"] = std::string(diffraction::diffraction_method_name(pass.diffraction().method));
-    metadata["facet:wavelengths"] = std::int64_t{pass.diffraction().most_wavelengths};
-    metadata["facet:taylor_terms"] = std::int64_t{pass.diffraction().most_taylor};
-  }
-  write_frame(options.output, image, metadata);
-  std::cerr << "facet: rendered " << width << "x" << height << " in " << wall_ms << " ms (GPU "
-            << stats.gpu_ms << " ms in " << stats.tiles << " tiles) on " << context.info().name
-            << " -> " << options.output.path.string() << "\n";
+  frames::write_frame(options.output, frame.image, frame.metadata);
+  std::cerr << "facet: rendered " << width << "x" << height << " in " << frame.wall_ms << " ms (GPU " << frame.gpu_ms
+            << " ms in " << gpu::tile_count(width, height) << " tiles) on " << context.info().name << " -> "
+            << options.output.path.string() << "\n";
   return 0;
 }
 

@@ -10,9 +10,9 @@
 
 #include "common/error.hpp"
 #include "common/progress.hpp"
-#include "cpu/reference_renderer.hpp"
-#include "image/flip.hpp"
+#include "frames/prepared_frames.hpp"
 #include "image/atomic_file.hpp"
+#include "image/flip.hpp"
 #include "image/heatmap.hpp"
 #include "image/png_io.hpp"
 #include "report/method_catalogue.hpp"
@@ -66,22 +66,19 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
                            const std::string& scene_name, BenchRecord record, const std::function<void()>& tick) {
   record.method = method.name;
   try {
-    const std::uint32_t messages_before = context.validation_message_count();
     const auto prepare_start = std::chrono::steady_clock::now();
-    const FrameRenderer render = method.prepare(context, scene);
+    frames::PreparedFrames prepared(scene, method.render_method(), &context);
+    const auto render = [&] { return prepared.render(scene.camera, reference.width, reference.height); };
     // The first frame is the warm-up (lavapipe JIT-compiles on the first dispatch) and gives the image.
-    const MethodRun first = render(reference.width, reference.height);
+    const frames::Frame first = render();
     record.prepare_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - prepare_start).count();
     tick();
     record.timing = time_repeats(repeats, [&] {
-      const double gpu_ms = render(reference.width, reference.height).gpu_ms;
+      const double gpu_ms = render().gpu_ms;
       tick();
       return gpu_ms;
     });
-    if (context.validation_message_count() != messages_before)
-      throw Error("Vulkan validation reported " +
-                  std::to_string(context.validation_message_count() - messages_before) + " messages");
     record.comparison = compare_images(first.image, reference);
     record.image = scene_name + "/" + file_stem(method.name) + ".png";
     record.heatmap = scene_name + "/" + file_stem(method.name) + ".flip.png";
@@ -110,17 +107,15 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
     scene = load_scene(run.scene_file);
     std::tie(run.width, run.height) = resolution(options, scene.camera);
     std::unique_ptr<ProgressBar> bar;
-    cpu::ReferenceOptions render;
-    render.width = run.width;
-    render.height = run.height;
-    render.grid = bench.grid;
-    render.seed = bench.seed;
-    render.progress = [&](std::int64_t done, std::int64_t total) {
+    frames::PreparedFrames reference_frames(scene, frames::ReferenceMethod{bench.grid, static_cast<std::int64_t>(bench.seed), 0},
+                                            nullptr);
+    frames::FrameRequest request;
+    request.progress = [&](std::int64_t done, std::int64_t total) {
       if (!bar) bar = std::make_unique<ProgressBar>("reference " + run.name, total);
       bar->update(done);
     };
     reference = cached_reference(cache_dir, {run.scene_file, bench.facet_version, run.width, run.height, bench.grid, bench.seed},
-                                 [&] { return cpu::render_reference(scene, render); });
+                                 [&] { return reference_frames.render(scene.camera, run.width, run.height, request).image; });
     if (bar) bar->finish();
     std::filesystem::create_directories(options.out_dir / run.name);
     run.reference_image = run.name + "/reference.png";

@@ -1,11 +1,8 @@
 #include "report/method_catalogue.hpp"
 
 #include <algorithm>
-#include <memory>
 #include <type_traits>
 #include <variant>
-
-#include "gpu/direct_pass.hpp"
 
 namespace facet::report {
 
@@ -41,49 +38,38 @@ SceneFeatures scene_features(const Scene& scene) {
   return features;
 }
 
-MethodPreparer direct_pass_method(const std::string& name) { return direct_pass_method(name, 0, 0); }
-
-MethodPreparer direct_pass_method(const std::string& name, int wavelengths, int taylor) {
-  return [name, wavelengths, taylor](vk::Context& context, const Scene& scene) -> FrameRenderer {
-    gpu::RenderMethod method = gpu::RenderMethod::parse(name);
-    method.diffraction.wavelengths = wavelengths;
-    method.diffraction.taylor = taylor;
-    auto pass = std::make_shared<gpu::DirectPass>(context, scene, method);
-    return [pass, &scene](int width, int height) {
-      gpu::RenderStats stats;
-      MethodRun run;
-      run.image = pass->render(scene.camera, width, height, &stats);
-      run.gpu_ms = stats.gpu_ms;
-      return run;
-    };
-  };
+gpu::RenderMethod CatalogueEntry::render_method() const {
+  gpu::RenderMethod parsed = gpu::RenderMethod::parse(method);
+  parsed.diffraction.wavelengths = wavelengths;
+  parsed.diffraction.taylor = taylor;
+  return parsed;
 }
 
 const std::vector<CatalogueEntry>& method_catalogue() {
   static const std::vector<CatalogueEntry> entries = {
-      {"naive", always, true, direct_pass_method("naive")},
-      {"mip", has_subpixel_detail, true, direct_pass_method("mip")},
-      {"colormip", has_subpixel_detail, true, direct_pass_method("colormip")},
-      {"filtered", has_subpixel_detail, true, direct_pass_method("filtered")},
-      {"filtered:table", has_subpixel_detail, true, direct_pass_method("filtered:table")},
+      {"naive", always, true, "naive"},
+      {"mip", has_subpixel_detail, true, "mip"},
+      {"colormip", has_subpixel_detail, true, "colormip"},
+      {"filtered", has_subpixel_detail, true, "filtered"},
+      {"filtered:table", has_subpixel_detail, true, "filtered:table"},
       // Diffraction (issue 11): the three methods at the material's own settings, then the spectral
       // integral with fewer or more wavelength samples than the material's tolerance picks, and
       // with fewer Taylor terms.
-      {"diffraction:spectral", has_diffraction, true, direct_pass_method("diffraction:spectral")},
-      {"diffraction:preintegrated", has_diffraction, true, direct_pass_method("diffraction:preintegrated")},
-      {"diffraction:orders", has_diffraction, true, direct_pass_method("diffraction:orders")},
-      {"wavelengths:8", has_diffraction, true, direct_pass_method("diffraction:spectral", 8, 0)},
-      {"wavelengths:16", has_diffraction, true, direct_pass_method("diffraction:spectral", 16, 0)},
-      {"wavelengths:32", has_diffraction, true, direct_pass_method("diffraction:spectral", 32, 0)},
-      {"wavelengths:64", has_diffraction, false, direct_pass_method("diffraction:spectral", 64, 0)},
-      {"taylor:2", has_diffraction, false, direct_pass_method("diffraction:spectral", 0, 2)},
-      {"taylor:4", has_diffraction, false, direct_pass_method("diffraction:spectral", 0, 4)},
-      {"preintegrated:wavelengths:64", has_diffraction, false, direct_pass_method("diffraction:preintegrated", 64, 0)},
-      {"ss:1", always, true, direct_pass_method("ss:1")},
-      {"ss:2", always, true, direct_pass_method("ss:2")},
-      {"ss:4", always, true, direct_pass_method("ss:4")},
-      {"ss:8", affordable_supersampling, true, direct_pass_method("ss:8")},
-      {"ss:16", affordable_supersampling, false, direct_pass_method("ss:16")},
+      {"diffraction:spectral", has_diffraction, true, "diffraction:spectral"},
+      {"diffraction:preintegrated", has_diffraction, true, "diffraction:preintegrated"},
+      {"diffraction:orders", has_diffraction, true, "diffraction:orders"},
+      {"wavelengths:8", has_diffraction, true, "diffraction:spectral", 8, 0},
+      {"wavelengths:16", has_diffraction, true, "diffraction:spectral", 16, 0},
+      {"wavelengths:32", has_diffraction, true, "diffraction:spectral", 32, 0},
+      {"wavelengths:64", has_diffraction, false, "diffraction:spectral", 64, 0},
+      {"taylor:2", has_diffraction, false, "diffraction:spectral", 0, 2},
+      {"taylor:4", has_diffraction, false, "diffraction:spectral", 0, 4},
+      {"preintegrated:wavelengths:64", has_diffraction, false, "diffraction:preintegrated", 64, 0},
+      {"ss:1", always, true, "ss:1"},
+      {"ss:2", always, true, "ss:2"},
+      {"ss:4", always, true, "ss:4"},
+      {"ss:8", affordable_supersampling, true, "ss:8"},
+      {"ss:16", affordable_supersampling, false, "ss:16"},
   };
   return entries;
 }
@@ -99,7 +85,7 @@ std::vector<CatalogueEntry> select_methods(const SceneFeatures& features, bool q
   }
   for (const std::string& name : requested) {
     auto it = std::find_if(catalogue.begin(), catalogue.end(), [&](const CatalogueEntry& e) { return e.name == name; });
-    selected.push_back(it != catalogue.end() ? *it : CatalogueEntry{name, always, true, direct_pass_method(name)});
+    selected.push_back(it != catalogue.end() ? *it : CatalogueEntry{name, always, true, name});
   }
   return selected;
 }

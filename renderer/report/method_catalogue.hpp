@@ -3,13 +3,11 @@
 // One row per method/setting in method_catalogue.cpp; adding a method is adding a row.
 #pragma once
 
-#include <functional>
 #include <string>
 #include <vector>
 
-#include "image/image.hpp"
+#include "gpu/render_method.hpp"
 #include "scene/scene.hpp"
-#include "vk/context.hpp"
 
 namespace facet::report {
 
@@ -22,36 +20,24 @@ struct SceneFeatures {
 };
 SceneFeatures scene_features(const Scene& scene);
 
-// One frame: the image and the device time (negative when the device has no timestamps).
-struct MethodRun {
-  Image image;
-  double gpu_ms = -1.0;
-};
-// Renders one frame of the prepared scene at width x height.
-using FrameRenderer = std::function<MethodRun(int width, int height)>;
-// Builds what a method needs once per scene (buffers, precomputed tables, pipeline): "precompute
-// once, render many", so the timed frames measure rendering alone.
-using MethodPreparer = std::function<FrameRenderer(vk::Context&, const Scene&)>;
-
 struct CatalogueEntry {
-  std::string name;                          // as results.json and the report show it
-  bool (*applies)(const SceneFeatures&);     // methods for detail the scene does not have are skipped
-  bool in_quick;                             // --quick keeps the cheaper settings only
-  MethodPreparer prepare;
+  std::string name;                       // as results.json and the report show it
+  bool (*applies)(const SceneFeatures&);  // methods for detail the scene does not have are skipped
+  bool in_quick;                          // --quick keeps the cheaper settings only
+  std::string method;                     // `facet render --method` text; may pick the diffraction method
+  int wavelengths = 0;                    // the diffraction materials' wavelength / Taylor-term counts (0: theirs)
+  int taylor = 0;
+
+  // The GPU method this entry renders with; throws facet::Error for an unknown method, so the error
+  // surfaces when it is prepared.
+  gpu::RenderMethod render_method() const;
 };
 
 const std::vector<CatalogueEntry>& method_catalogue();
 
-// The GPU direct pass (gpu::DirectPass) with `gpu::RenderMethod::parse(name)`, the scene's camera;
-// parse errors surface when it is prepared.
-MethodPreparer direct_pass_method(const std::string& name);
-// The same pass with the diffraction materials' wavelength / Taylor-term counts overridden (0: the
-// material's); `name` may pick the diffraction method (diffraction:spectral|preintegrated|orders).
-MethodPreparer direct_pass_method(const std::string& name, int wavelengths, int taylor);
-
 // The methods to time on a scene: every applicable row (only the quick ones if `quick`), or, when
 // `requested` is not empty, exactly those names in that order (unknown names still get an entry,
-// whose preparation throws, so the report shows the error).
+// whose render_method() throws, so the report shows the error).
 std::vector<CatalogueEntry> select_methods(const SceneFeatures& features, bool quick,
                                            const std::vector<std::string>& requested);
 

@@ -332,6 +332,29 @@ TEST_F(Batch, RenderFrameDrawsTheBatchFrameAndJobErrorsAreOneLine) {
                              ": not a readable facet manifest (delete it to render everything again)\n");
 }
 
+// Batch frames carry the diffraction metadata `facet render` writes for the same method
+// (docs/diffraction_fast_paths.md): both go through frames::PreparedFrames.
+TEST_F(Batch, DiffractionFramesCarryTheDiffractionMetadataOfRender) {
+  const fs::path plate = fs::path(FACET_SOURCE_DIR) / "scenes/diffraction_plate.json";
+  const fs::path job_file = job("[\"" + plate.string() + "\"]", R"(["diffraction:preintegrated"])");
+  const auto run = batch(job_file, dir_ / "out");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ExrMetadata from_batch, from_render;
+  read_exr(dir_ / "out/out/diffraction_plate/diffraction_preintegrated/00.exr", &from_batch);
+  const auto render = run_command(kFacet + " render " + plate.string() +
+                                  " --method diffraction:preintegrated --width 32 --height 18 --no-preview -o " +
+                                  (dir_ / "render.exr").string());
+  ASSERT_EQ(render.exit_code, 0) << render.err;
+  read_exr(dir_ / "render.exr", &from_render);
+  EXPECT_EQ(std::get<std::string>(from_batch.at("facet:diffraction_method")), "preintegrated");
+  for (const char* key : {"facet:diffraction_method", "facet:wavelengths", "facet:taylor_terms"}) {
+    ASSERT_EQ(from_batch.count(key), 1u) << key;
+    EXPECT_EQ(from_batch.at(key), from_render.at(key)) << key;
+  }
+  EXPECT_GT(std::get<std::int64_t>(from_batch.at("facet:wavelengths")), 0);
+  EXPECT_GT(std::get<std::int64_t>(from_batch.at("facet:taylor_terms")), 0);
+}
+
 TEST(BatchExamples, TheShippedJobsParseAndNameExistingScenes) {
   const fs::path examples = fs::path(FACET_SOURCE_DIR) / "examples";
   size_t jobs = 0;

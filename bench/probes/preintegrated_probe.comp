@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Test probe: the pre-integrated colour of query i (direction pair at queries[2i], queries[2i+1])
-// into results[i], through render/diffraction_preintegrated.glsl (tests/diffraction/preintegrated_gpu_test.cpp).
+// Probe: the pre-integrated colour of query i (direction pair at queries[2i], queries[2i+1])
+// into results[i], through render/diffraction_preintegrated.glsl (tests/diffraction/preintegrated_test.cpp).
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Queries { vec4 queries[]; };
 layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };

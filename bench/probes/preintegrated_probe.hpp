@@ -1,5 +1,5 @@
 // Runs shaders/render/diffraction_preintegrated.glsl on the GPU through the test probe
-// (tests/diffraction/shaders/preintegrated_probe.comp): used by the GPU test and the benchmark.
+// (bench/probes/preintegrated_probe.comp): used by the GPU test and the benchmark.
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // Runs shaders/render/diffraction_orders.glsl on the GPU through the test probe
-// (tests/diffraction/shaders/orders_probe.comp): used by the GPU test and the benchmark.
+// (bench/probes/orders_probe.comp): used by the GPU test and the benchmark.
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Test probe: the order-restricted colour (linear sRGB) of query i (direction pair at
+// Probe: the order-restricted colour (linear sRGB) of query i (direction pair at
 // queries[2i], queries[2i+1]) into results[i], through render/diffraction_orders.glsl.
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Queries { vec4 queries[]; };

@@ -1,0 +1,31 @@
+// The EXR metadata of facet frames, written here only (README "Frames are scene-linear OpenEXR with
+// metadata"; the keys are a contract).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "frames/frame_method.hpp"
+#include "gpu/diffraction_upload.hpp"
+#include "image/exr_io.hpp"
+#include "scene/scene.hpp"
+
+namespace facet::frames {
+
+// facet:scene, facet:method, facet:spp, facet:device, facet:version.
+ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::int64_t samples_per_pixel,
+                           const std::string& device);
+
+// facet:gpu_ms and facet:render_ms.
+void add_timings(ExrMetadata& metadata, double gpu_ms, double wall_ms);
+
+// facet:grid, facet:seed, facet:filter: the reference's sampling.
+void add_reference_metadata(ExrMetadata& metadata, const ReferenceMethod& reference);
+
+// facet:diffraction_method, facet:wavelengths, facet:taylor_terms, when the pass has diffraction materials.
+void add_diffraction_metadata(ExrMetadata& metadata, const gpu::DiffractionBuffers& diffraction);
+
+// facet:frame, for a frame of the scene's camera_path (nothing for -1, the still camera).
+void add_frame_number(ExrMetadata& metadata, int frame);
+
+}  // namespace facet::frames

@@ -1,0 +1,87 @@
+#include "frames/prepared_frames.hpp"
+
+#include <string>
+
+#include "common/error.hpp"
+#include "cpu/reference_renderer.hpp"
+#include "frames/frame_metadata.hpp"
+
+namespace facet::frames {
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+std::pair<int, int> frame_size(const Camera& camera, int width, int height) {
+  return {width > 0 ? width : camera.width, height > 0 ? height : camera.height};
+}
+
+PreparedFrames::PreparedFrames(const Scene& scene, FrameMethod method, vk::Context* context)
+    : scene_(&scene), method_(std::move(method)), context_(context) {
+  const auto* gpu_method = std::get_if<gpu::RenderMethod>(&method_);
+  if (!gpu_method) return;
+  if (!context_) throw Error("method " + gpu_method->name() + " needs a Vulkan device");
+  validation_messages_ = context_->validation_message_count();
+  pass_ = std::make_unique<gpu::DirectPass>(*context_, scene, *gpu_method);
+}
+
+Frame PreparedFrames::render(const Camera& camera, int width, int height, const FrameRequest& request) {
+  const auto start = request.since.value_or(std::chrono::steady_clock::now());
+  Frame frame;
+  frame.image = pass_ ? render_gpu(camera, width, height, request, frame.gpu_ms)
+                      : render_reference(camera, width, height, request);
+  frame.wall_ms = ms_since(start);
+  frame.metadata = metadata();
+  if (request.timings) add_timings(frame.metadata, frame.gpu_ms, frame.wall_ms);
+  add_frame_number(frame.metadata, request.frame);
+  return frame;
+}
+
+Image PreparedFrames::render_gpu(const Camera& camera, int width, int height, const FrameRequest& request,
+                                 double& gpu_ms) {
+  gpu::RenderStats stats;
+  gpu::TileProgress progress;
+  if (request.progress) progress = [&](int done, int total) { request.progress(done, total); };
+  Image image = pass_->render(camera, width, height, &stats, progress);
+  const std::uint32_t messages = context_->validation_message_count() - validation_messages_;
+  validation_messages_ = context_->validation_message_count();
+  if (messages > 0)
+    throw Error("Vulkan validation reported " + std::to_string(messages) + " messages; no image written");
+  gpu_ms = stats.gpu_ms;
+  return image;
+}
+
+Image PreparedFrames::render_reference(const Camera& camera, int width, int height, const FrameRequest& request) const {
+  const auto& reference = std::get<ReferenceMethod>(method_);
+  cpu::ReferenceOptions options;
+  options.width = width;
+  options.height = height;
+  options.grid = reference.grid;
+  options.seed = static_cast<std::uint64_t>(reference.seed);
+  options.threads = reference.threads;
+  options.cancel = request.cancel;
+  options.progress = request.progress;
+  Scene framed = *scene_;  // the reference renders the scene's own camera
+  framed.camera = camera;
+  return cpu::render_reference(framed, options);
+}
+
+ExrMetadata PreparedFrames::metadata() const {
+  if (const auto* method = std::get_if<gpu::RenderMethod>(&method_)) {
+    ExrMetadata metadata = frame_metadata(*scene_, method->name(),
+                                          method->samples_per_axis * method->samples_per_axis, context_->info().name);
+    add_diffraction_metadata(metadata, pass_->diffraction());
+    return metadata;
+  }
+  const auto& reference = std::get<ReferenceMethod>(method_);
+  ExrMetadata metadata =
+      frame_metadata(*scene_, "reference", static_cast<std::int64_t>(reference.grid) * reference.grid, "cpu");
+  add_reference_metadata(metadata, reference);
+  return metadata;
+}
+
+}  // namespace facet::frames
