@@ -1,4 +1,4 @@
-// Frame time of the microsurface methods on the three microsurface scenes at 1280x720 (GPU
+// Frame time of the microsurface methods on the microsurface scenes at 1280x720 (GPU
 // timestamps of the direct pass, manual time; pipeline JIT and upload excluded by a warm-up frame),
 // with each method's RMSE against a 16x16 jittered CPU reference at 320x180 as a counter (the
 // reference traces the height field; cached in the build tree).
@@ -81,5 +81,7 @@ void BM_Microsurface(benchmark::State& state, const std::string& scene_name, con
 FACET_MICROSURFACE_SCENE(microsurface_terrain);
 FACET_MICROSURFACE_SCENE(microsurface_slope);
 FACET_MICROSURFACE_SCENE(microsurface_glossy);
+FACET_MICROSURFACE_SCENE(microsurface_rough_diagonal);
+FACET_MICROSURFACE_SCENE(microsurface_horizon);
 
 }  // namespace
