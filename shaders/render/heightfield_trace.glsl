@@ -117,14 +117,6 @@ vec4 heightfield_extent(HeightField f, ivec4 n) {
               base.y + float(n.z << n.x), base.y + float(min((n.z + 1) << n.x, f.size.y)));
 }
 
-// (min, max) of the heights under a node, empty (min > max) for a node outside its level.
-vec2 heightfield_node_bounds(HeightField f, ivec4 n) {
-  if (n.x > f.top) return f.range;
-  uvec4 info = texture_levels[(f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(n.x)].info;
-  if (n.y >= int(info.y) || n.z >= int(info.z)) return vec2(1.0, -1.0);
-  return texels[info.x + uint(n.z) * info.y + uint(n.y)].xy;
-}
-
 // The level-l surface's height at corner (i, j) of the level's node grid, i <= width, j <= height
 // (the last corner is the first: the field repeats).
 float heightfield_corner(HeightField f, int level, int i, int j) {
@@ -151,23 +143,30 @@ vec4 heightfield_leaf_corners(HeightField f, ivec4 n, vec4 e) {
   return mix(z, coarse, f.blend);
 }
 
-// Where the ray enters the node's box (x, y extent by z bounds), or kHeightFieldFar if it misses it before
-// `best`; margin_z widens the z bounds against the ray's rounding.
-float heightfield_enter(HeightField f, HeightFieldRay r, ivec4 n, float best, float margin_z) {
+// The record of MIP level l (<= top) of the bounds the ray tests: dilated when it traces a smoothed
+// surface.
+uvec4 heightfield_level(HeightField f, int l) {
+  return texture_levels[(f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(min(l, f.top))].info;
+}
+
+// The planes splitting node n (level > 0) into its children, per axis (lo, mid, hi) in texels; mid is
+// clipped to hi where the tile (or the tile grid) ends inside the node's lower half.
+void heightfield_split(HeightField f, ivec4 n, out vec3 x, out vec3 y) {
   vec4 e = heightfield_extent(f, n);
-  vec2 z = heightfield_node_bounds(f, n);
-  if (n.x == f.leaf && (f.leaf > 0 || f.blend > 0.0) && z.x <= z.y) {
-    // A smoothed leaf lies between its corners (a bilinear patch), which the next level's corners
-    // reach beyond the dilated bounds.
-    vec4 c = heightfield_leaf_corners(f, n, e);
-    z = vec2(min(min(c.x, c.y), min(c.z, c.w)), max(max(c.x, c.y), max(c.z, c.w)));
+  vec2 half_size = n.x > f.top ? vec2(float(1 << (n.x - f.top - 1))) * vec2(f.size) : vec2(float(1 << (n.x - 1)));
+  x = vec3(e.x, min(e.x + half_size.x, e.y), e.y);
+  y = vec3(e.z, min(e.z + half_size.y, e.w), e.w);
+}
+
+// The t-intervals over the lower (xy) and upper (zw) half along one axis, from the planes
+// (lo, mid, hi): three products shared by the four children (d = 0: all t or none).
+vec4 heightfield_halves(float o, float d, float inv_d, vec3 planes) {
+  if (d == 0.0) {
+    vec2 all_t = vec2(-kHeightFieldFar, kHeightFieldFar), none = vec2(kHeightFieldFar, -kHeightFieldFar);
+    return vec4(o >= planes.x && o <= planes.y ? all_t : none, o >= planes.y && o <= planes.z ? all_t : none);
   }
-  if (z.x > z.y) return kHeightFieldFar;
-  vec2 tx = heightfield_slab(r.o.x, r.d.x, r.inv_d.x, e.x, e.y);
-  vec2 ty = heightfield_slab(r.o.y, r.d.y, r.inv_d.y, e.z, e.w);
-  vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
-  float enter = max(max(tx.x, ty.x), max(tz.x, r.t_lo));
-  return enter <= min(min(tx.y, ty.y), min(tz.y, best)) ? enter : kHeightFieldFar;
+  vec3 t = (planes - o) * inv_d;
+  return d > 0.0 ? t.xyyz : t.yxzy;
 }
 
 // The child (a, b) of node n (level > 0), or level -1 if it lies outside the tile grid.
@@ -179,6 +178,27 @@ ivec4 heightfield_child(HeightField f, ivec4 n, int a, int b) {
   return g == 0 ? ivec4(f.top, 0, 0, c.z * f.tiles.x + c.y) : c;
 }
 
+// Where the ray enters node c (level -1: none) whose x and y intervals are tx, ty, or kHeightFieldFar
+// if it misses it before `best`; `level`: the record of c's level in the bounds chain.
+float heightfield_child_enter(HeightField f, HeightFieldRay r, ivec4 c, vec2 tx, vec2 ty, uvec4 level, float best,
+                              float margin_z) {
+  if (c.x < 0) return kHeightFieldFar;
+  vec2 z = f.range;
+  if (c.x <= f.top) {  // a MIP node: padding entries outside the level are empty
+    if (c.y >= int(level.y) || c.z >= int(level.z)) return kHeightFieldFar;
+    z = texels[level.x + uint(c.z) * level.y + uint(c.y)].xy;
+    if (c.x == f.leaf && (f.leaf > 0 || f.blend > 0.0)) {
+      // A smoothed leaf lies between its corners (a bilinear patch), which the next level's corners
+      // reach beyond the dilated bounds.
+      vec4 cz = heightfield_leaf_corners(f, c, heightfield_extent(f, c));
+      z = vec2(min(min(cz.x, cz.y), min(cz.z, cz.w)), max(max(cz.x, cz.y), max(cz.z, cz.w)));
+    }
+  }
+  vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
+  float enter = max(max(tx.x, ty.x), max(tz.x, r.t_lo));
+  return z.x <= z.y && enter <= min(min(tx.y, ty.y), min(tz.y, best)) ? enter : kHeightFieldFar;
+}
+
 // The ray's first hit t with the field in (r.t_lo, r.t_hi) (any hit, if any_hit), or -1.
 float heightfield_search(HeightField f, HeightFieldRay r, bool any_hit) {
   if (!(r.t_lo <= r.t_hi)) return -1.0;
@@ -188,7 +208,10 @@ float heightfield_search(HeightField f, HeightFieldRay r, bool any_hit) {
   float stack_enter[kHeightFieldStack];
   int size = 0;
   ivec4 node = ivec4(f.top + f.tile_levels, 0, 0, 0);
-  float enter = heightfield_enter(f, r, node, best, margin_z);
+  vec4 root = heightfield_extent(f, node);
+  float enter = heightfield_child_enter(f, r, node, heightfield_slab(r.o.x, r.d.x, r.inv_d.x, root.x, root.y),
+                                        heightfield_slab(r.o.y, r.d.y, r.inv_d.y, root.z, root.w),
+                                        heightfield_level(f, node.x), best, margin_z);
   bool current = enter < kHeightFieldFar;
   // One node per step, nearest first: the nearest child is descended into directly and its siblings
   // are pushed far to near, so nodes are visited in the order of a pop-the-nearest traversal.
@@ -218,13 +241,19 @@ float heightfield_search(HeightField f, HeightFieldRay r, bool any_hit) {
       }
       continue;
     }
-    // The four children, sorted far to near by where the ray enters them.
+    // The four children, sorted far to near by where the ray enters them. Their x and y intervals
+    // are the halves of the node's; their height bounds share one level record. Written out four
+    // times, not looped: lavapipe counts every loop iteration against its limit.
+    vec3 px, py;
+    heightfield_split(f, node, px, py);
+    vec4 hx = heightfield_halves(r.o.x, r.d.x, r.inv_d.x, px), hy = heightfield_halves(r.o.y, r.d.y, r.inv_d.y, py);
     ivec4 c[4] = ivec4[4](heightfield_child(f, node, 0, 0), heightfield_child(f, node, 1, 0),
                           heightfield_child(f, node, 0, 1), heightfield_child(f, node, 1, 1));
-    float e[4] = float[4](c[0].x < 0 ? kHeightFieldFar : heightfield_enter(f, r, c[0], best, margin_z),
-                          c[1].x < 0 ? kHeightFieldFar : heightfield_enter(f, r, c[1], best, margin_z),
-                          c[2].x < 0 ? kHeightFieldFar : heightfield_enter(f, r, c[2], best, margin_z),
-                          c[3].x < 0 ? kHeightFieldFar : heightfield_enter(f, r, c[3], best, margin_z));
+    uvec4 level = heightfield_level(f, node.x - 1);
+    float e[4] = float[4](heightfield_child_enter(f, r, c[0], hx.xy, hy.xy, level, best, margin_z),
+                          heightfield_child_enter(f, r, c[1], hx.zw, hy.xy, level, best, margin_z),
+                          heightfield_child_enter(f, r, c[2], hx.xy, hy.zw, level, best, margin_z),
+                          heightfield_child_enter(f, r, c[3], hx.zw, hy.zw, level, best, margin_z));
 #define FACET_HF_ORDER(a, b)                                 \
   if (e[a] < e[b]) {                                         \
     float te = e[a]; e[a] = e[b]; e[b] = te;                 \
