@@ -37,7 +37,7 @@ Image render_direct_cpu(const Scene& scene, int width, int height, const diffrac
       glm::dvec3 color = scene.background;
       if (auto hit = caster.intersect(camera.origin, d)) {
         glm::dvec3 n = hit->shading_normal;
-        // Same scale-relative offset as the GPU pass (shaders/render_direct.comp).
+        // Same scale-relative offset as the GPU pass (shaders/render/direct_pass.glsl).
         glm::dvec3 origin = hit->position + n * (1e-4 * std::max(1.0, glm::length(hit->position)));
         double visibility =
             glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;

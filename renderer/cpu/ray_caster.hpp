@@ -31,7 +31,7 @@ struct Hit {
   glm::dvec3 position, geometric_normal, shading_normal;
   glm::dvec2 uv;
   uint32_t material;
-  glm::dvec3 dpdu{0.0};  // dp/du of the uv parameterisation, as render_direct.comp's surface_uv (0: degenerate)
+  glm::dvec3 dpdu{0.0};  // dp/du of the uv parameterisation, as render/trace.glsl's surface_uv (0: degenerate)
 };
 
 class RayCaster {

@@ -68,7 +68,7 @@ bool ReferenceScene::occluded(glm::dvec3 o, glm::dvec3 d) const {
 
 glm::dvec3 ReferenceScene::shadow_origin(const SurfaceHit& hit) const {
   const double scale = std::max(1.0, glm::length(hit.position));
-  if (!hit.micro) return hit.position + hit.normal * (1e-4 * scale);  // as the direct pass (render_direct.comp)
+  if (!hit.micro) return hit.position + hit.normal * (1e-4 * scale);  // as the direct pass (render/direct_pass.glsl)
   // Height fields are intersected exactly in double: a few hundred ulp of the position clear the
   // surface, and 1e-6 texel keeps the offset far below the field's detail.
   const double texel = std::get<MicrosurfaceMaterial>(scene_.materials[hit.material]).texel_size;

@@ -1,5 +1,5 @@
 // How a diffraction material's spectrum becomes a colour in the render pass (issue 11; the values
-// are kDiffractionMethod, constant_id 5 of shaders/render_direct.comp):
+// are kDiffractionMethod, constant_id 5 of shaders/render/direct_pass.glsl):
 //   spectral       the Taylor BRDF at every wavelength sample (docs/diffraction.md)
 //   preintegrated  the wavelength integral folded into tables over the scene's (u, v) (docs/diffraction_fast_paths.md)
 //   orders         only the wavelengths near the grating's orders (spectral for non-periodic gratings)

@@ -1,6 +1,7 @@
 #include "gpu/direct_pass.hpp"
 
 #include <algorithm>
+#include <span>
 #include <string>
 #include <variant>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "gpu/microsurface_upload.hpp"
 #include "gpu/workgroup_order.hpp"
 #include "render_direct.spv.h"
+#include "render_direct_fields.spv.h"
 
 namespace facet::gpu {
 
@@ -21,11 +23,23 @@ bool uses(const Scene& scene) {
     if (std::holds_alternative<M>(m)) return true;
   return false;
 }
-// naive and ss:K trace microsurfaces' height fields (render/heightfield_trace.glsl): refuses, in one
-// line, fields whose traversal could pass the shader's loop bound or stack (lavapipe would cut the
-// loop short without a word).
+// naive, ss:K and filtered trace microsurfaces' height fields; mip and colormip shade the flat rectangle.
+bool traces_height_fields(const Scene& scene, const RenderMethod& method) {
+  return uses<MicrosurfaceMaterial>(scene) && method.texture != RenderMethod::Texture::Mip &&
+         method.texture != RenderMethod::Texture::Colormip;
+}
+
+// The program of the pass: the one that traces height fields only where the method does
+// (shaders/render/direct_pass.glsl: the tracer costs every pipeline seconds of set-up).
+std::span<const uint32_t> direct_pass_program(const Scene& scene, const RenderMethod& method) {
+  return traces_height_fields(scene, method) ? std::span<const uint32_t>(render_direct_fields_spv)
+                                             : std::span<const uint32_t>(render_direct_spv);
+}
+
+// Refuses, in one line, height fields whose traversal could pass the shader's loop bound or stack
+// (render/heightfield_trace.glsl; lavapipe would cut the loop short without a word).
 void check_height_field_tracing(const Scene& scene, const RenderMethod& method) {
-  if (method.texture != RenderMethod::Texture::Naive) return;
+  if (!traces_height_fields(scene, method)) return;
   std::int64_t nodes = 0;
   for (const Plane& plane : scene.planes) {
     const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
@@ -39,7 +53,7 @@ void check_height_field_tracing(const Scene& scene, const RenderMethod& method) 
   if (nodes > FACET_HEIGHTFIELD_MAX_STEPS)
     throw Error("the microsurfaces' height fields span too many texels for the GPU tracer: a ray may visit " +
                 std::to_string(nodes) + " quadtree nodes, more than its loop bound of " +
-                std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) + " (use coarser texels, a smaller rectangle or --method filtered)");
+                std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) + " (use coarser texels, a smaller rectangle or --method mip)");
 }
 
 }  // namespace
@@ -57,7 +71,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       diffraction_(upload_diffraction(context, scene, method.diffraction)),
       pixels_(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size),
       kernel_(context, {.name = "render_direct",
-                        .spirv = render_direct_spv,
+                        .spirv = direct_pass_program(scene, method),
                         .buffer_count = static_cast<uint32_t>(bindings().size()),
                         .push_constant_bytes = sizeof(GpuTile),
                         .specialization = {{0, uses<MicroflakeMaterial>(scene) ? 1u : 0u},

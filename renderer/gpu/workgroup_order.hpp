@@ -1,5 +1,5 @@
 // The order in which a dispatch's workgroups visit the blocks of a tile
-// (render_direct.comp, tile_position). Lavapipe hands each of its T threads one contiguous 1/T of a
+// (render/direct_pass.glsl, tile_position). Lavapipe hands each of its T threads one contiguous 1/T of a
 // dispatch's workgroups (Mesa's lp_cs_tpool: iter_per_thread = count / threads, no stealing),
 // so where the costly pixels gather in one part of a tile (a highlight, a band of diffraction
 // orders) that thread works alone while the others idle. Workgroup g therefore renders block

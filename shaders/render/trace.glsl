@@ -8,7 +8,9 @@
 #define FACET_RENDER_TRACE_GLSL
 #include "lib/analytic_intersect.glsl"
 #include "lib/triangle_intersect.glsl"
+#ifdef FACET_HEIGHT_FIELDS
 #include "render/heightfield_trace.glsl"
+#endif
 #include "render/scene_bindings.glsl"
 
 const float kInfinity = 1e30;
@@ -28,6 +30,7 @@ struct Hit {
   vec2 barycentric;  // triangles; height fields: the hit's texel coordinates
 };
 
+#ifdef FACET_HEIGHT_FIELDS
 bool is_height_field(GpuPlane plane, bool fields) {
   return kHasMicrosurface && fields && materials[plane.material.x].kind.x == FACET_MATERIAL_MICROSURFACE;
 }
@@ -41,6 +44,7 @@ float trace_height_field(uint i, vec3 o, vec3 d, float t_max, bool any_hit, floa
   q = clamp(r.o.xy + t * r.d.xy, vec2(0.0), 2.0 * planes[i].uv_half_size.zw / m.albedo.w);
   return t;
 }
+#endif
 
 // The closest hit before hit.t, or with `any_hit` the first one found in traversal order (shadow
 // rays need only whether one exists; callers pass a constant, so each use compiles to one variant).
@@ -83,6 +87,7 @@ bool inside_plane_rectangle(GpuPlane plane, vec3 p) {
 Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, vec3 d_dx, vec3 d_dy) {
   Hit hit = Hit(t_max, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0));
   for (uint i = 0u; i < globals.counts.x; ++i) {
+#ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(planes[i], fields)) {
       vec2 q;
       float lambda = smoothed ? microsurface_trace_level(materials[planes[i].material.x], planes[i], o, d, d_dx, d_dy) : 0.0;
@@ -96,6 +101,7 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
       }
       continue;
     }
+#endif
     float t = intersect_plane(o, d, planes[i].point.xyz, planes[i].normal.xyz, t_min, hit.t);
     if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * d))
       hit = Hit(t, planes[i].normal.xyz, planes[i].material.x, kPlane, i, vec2(0.0));
@@ -118,11 +124,13 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields) {
   uint skip_plane = from.primitive == kPlane ? from.index : kNoHit;
   uint skip_sphere = from.primitive == kSphere && dot(from.normal, n) > 0.0 ? from.index : kNoHit;
   for (uint i = 0u; i < globals.counts.x; ++i) {
+#ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(planes[i], fields)) {  // a field shadows itself: never skipped
       vec2 q;
       if (trace_height_field(i, o, l, kInfinity, true, 0.0, q) > 0.0) return true;
       continue;
     }
+#endif
     if (i == skip_plane) continue;
     float t = intersect_plane(o, l, planes[i].point.xyz, planes[i].normal.xyz, 0.0, kInfinity);
     if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * l)) return true;

@@ -1,0 +1,131 @@
+// Primary rays through the scene's planes, spheres and BVH of triangles; direct lighting from the
+// directional light (with a shadow ray) plus the ambient fill, for every macro-surface material.
+// Specialization constants compile in only what a scene and a method use:
+//   0 kHasMicroflake   microflake half-spaces (lib/microflake_shading.glsl)
+//   1 kHasTexture      colour-mapped textures
+//   2 kTextureMethod   0 naive (finest level, colour map per sample), 1 mip (MIP-mapped texture, then
+//                      colour map), 2 colormip (MIP-mapped colour-mapped texture), 3 filtered (the
+//                      footprint's Gaussian N(mu, sigma^2) integrated against the colour map exactly),
+//                      4 filtered:table (the same Gaussian looked up in the map's prefiltered table)
+//   3 kSamplesPerAxis  K: K x K stratified rays per pixel, averaged (ss:K), one stratum per dispatch
+//                      (tile.stratum) so no invocation loops over samples: lavapipe ends an
+//                      invocation's loops after 65535 iterations in all (docs/diffraction.md)
+//   4 kHasDiffraction  diffraction gratings (render/diffraction_shading.glsl)
+//   5 kDiffractionMethod  how a grating's spectrum becomes a colour: 0 spectral (wavelength samples)
+//   6 kHasMicrosurface colour-mapped microsurfaces on finite planes, by kTextureMethod
+//                      (naive and ss:K trace their height fields: render/heightfield_trace.glsl)
+//   7 kHasSpheres, 8 kHasTriangles  the scene has spheres / meshes (render/trace.glsl): lavapipe runs
+//                      the body of a loop over no primitives once, masked, so absent kinds are compiled out
+// Tracing, the scene's buffers and each material family's shading live in render/*.glsl.
+// Two programs include this file: render_direct.comp, and render_direct_fields.comp, which defines
+// FACET_HEIGHT_FIELDS and so traces microsurfaces' height fields. Lavapipe compiles every call of
+// the traversal it inlines even where a specialization constant makes it dead: the tracer's three
+// calls would triple the pipeline set-up of every scene (1.4 s -> 3.4 s for colormap_objects).
+#ifndef FACET_RENDER_DIRECT_PASS_GLSL
+#define FACET_RENDER_DIRECT_PASS_GLSL
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = 0) const bool kHasMicroflake = false;
+layout(constant_id = 1) const bool kHasTexture = false;
+layout(constant_id = 2) const uint kTextureMethod = 0u;
+layout(constant_id = 3) const uint kSamplesPerAxis = 1u;
+layout(constant_id = 4) const bool kHasDiffraction = false;
+layout(constant_id = 5) const uint kDiffractionMethod = 0u;
+layout(constant_id = 6) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
+layout(constant_id = 7) const bool kHasSpheres = true;
+layout(constant_id = 8) const bool kHasTriangles = true;
+// naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
+// traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
+#ifdef FACET_HEIGHT_FIELDS
+const bool kTracesHeightFields = kHasMicrosurface && kTextureMethod != 1u && kTextureMethod != 2u;
+#else
+const bool kTracesHeightFields = false;
+#endif
+
+#include "lib/camera.glsl"
+#include "lib/lambert.glsl"
+#include "lib/microflake_shading.glsl"
+#include "render/diffraction_shading.glsl"
+#include "render/scene_bindings.glsl"
+#include "render/texture_sampling.glsl"
+#include "render/microsurface_shading.glsl"
+#include "render/trace.glsl"
+#ifdef FACET_HEIGHT_FIELDS
+#include "render/microsurface_field.glsl"
+#endif
+
+vec3 camera_ray(vec2 film) {
+  return camera_ray_direction(globals.camera_forward.xyz, globals.camera_right.xyz, globals.camera_up.xyz, film,
+                              vec2(globals.image.xy));
+}
+
+// Radiance of the hit `hit` of the camera ray o + t d through `film` (pixels); `pixel_step` is the film
+// distance to the neighbouring rays whose hits span the texture footprint.
+vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
+  if (hit.material == kNoHit) return globals.background.rgb;
+  vec3 p = o + hit.t * d;
+  vec3 n = normalize(hit.normal);
+  if (dot(n, d) > 0.0) n = -n;
+  vec3 l = globals.light_direction.xyz;
+  GpuMaterial m = materials[hit.material];
+#ifdef FACET_HEIGHT_FIELDS
+  if (kHasMicrosurface && hit.primitive == kHeightField)
+    return microsurface_field_radiance(m, hit, o, d, p, n, camera_ray(film + vec2(pixel_step, 0.0)),
+                                       camera_ray(film + vec2(0.0, pixel_step)), l);
+#endif
+  // Offset the shadow ray's origin by a distance relative to the scene's scale at p.
+  float visibility = dot(n, l) > 0.0 && occluded(p + n * (1e-4 * max(1.0, length(p))), l, hit, n, kTracesHeightFields) ? 0.0 : 1.0;
+  if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE)  // finite planes only (scene loader)
+    return microsurface_radiance(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
+                                 camera_ray(film + vec2(0.0, pixel_step)), l, visibility, false);
+  if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
+    return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
+                               visibility, globals.ambient.rgb);
+  vec3 albedo = m.albedo.rgb;
+  if (kHasTexture && m.kind.x == FACET_MATERIAL_COLORMAP_TEXTURE) {
+    SurfaceUv s = surface_uv(hit, p);
+    vec2 duv_dx = vec2(0.0), duv_dy = vec2(0.0);
+    if (kTextureMethod != 0u) {
+      duv_dx = uv_differential(o, camera_ray(film + vec2(pixel_step, 0.0)), p, n, s.dpdu, s.dpdv);
+      duv_dy = uv_differential(o, camera_ray(film + vec2(0.0, pixel_step)), p, n, s.dpdu, s.dpdv);
+    }
+    albedo = textured_albedo(m, s.uv, duv_dx, duv_dy);
+  }
+  vec3 diffracted = vec3(0.0);  // a diffraction material's albedo is its Lambertian base
+  if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION)
+    diffracted = diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility);
+  return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb) + diffracted;
+}
+
+// Radiance along the camera ray through `film`.
+vec3 radiance(vec2 film, float pixel_step) {
+  vec3 o = globals.camera_origin.xyz;
+  vec3 d = camera_ray(film);
+  Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields, kTextureMethod >= 3u,
+                  camera_ray(film + vec2(pixel_step, 0.0)), camera_ray(film + vec2(0.0, pixel_step)));
+  return shade(o, d, hit, film, pixel_step);
+}
+
+// The tile position of this invocation: its workgroup renders block g s mod n (g: the workgroup's
+// index in the dispatch), so each lavapipe thread's contiguous share of the workgroups is spread
+// over the whole tile (renderer/gpu/workgroup_order.hpp).
+uvec2 tile_position() {
+  uint g = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  uint block = (g * tile.spread.y) % tile.spread.x;
+  return uvec2(block % gl_NumWorkGroups.x, block / gl_NumWorkGroups.x) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy;
+}
+
+void main() {
+  uvec2 at = tile_position();
+  uvec2 pixel = at + tile.rect.xy;
+  if (at.x >= tile.rect.z || at.y >= tile.rect.w) return;
+  float step = 1.0 / float(kSamplesPerAxis);
+  vec3 sample_radiance = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
+  // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
+  // end: the same float operations as averaging them within one invocation.
+  uint i = at.y * tile.rect.z + at.x;
+  vec3 sum = tile.stratum.z != 0u ? pixels[i].rgb + sample_radiance : sample_radiance;
+  pixels[i] = vec4(tile.stratum.w != 0u ? sum / float(kSamplesPerAxis * kSamplesPerAxis) : sum, 1.0);
+}
+
+#endif
