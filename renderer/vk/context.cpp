@@ -234,6 +234,7 @@ Context::~Context() { release(); }
 void Context::release() {
   if (device_) {
     vkDeviceWaitIdle(device_);
+    pipelines_.clear();
     if (fence_) vkDestroyFence(device_, fence_, nullptr);
     if (timestamps_) vkDestroyQueryPool(device_, timestamps_, nullptr);
     if (descriptor_pool_) vkDestroyDescriptorPool(device_, descriptor_pool_, nullptr);

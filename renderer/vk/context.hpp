@@ -14,6 +14,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "vk/pipeline_cache.hpp"
+
 namespace facet::vk {
 
 struct DeviceInfo {
@@ -49,6 +51,8 @@ class Context {
   const DeviceInfo& info() const { return info_; }
   const VkPhysicalDeviceLimits& limits() const { return limits_; }
   VkDescriptorPool descriptor_pool() const { return descriptor_pool_; }
+  // The pipelines compiled on this device so far (vk/kernel.hpp).
+  PipelineCache& pipelines() { return pipelines_; }
   bool validation_enabled() const { return validation_; }
 
   // Memory type index with all `required` flags (and `preferred` ones if possible).
@@ -86,6 +90,7 @@ class Context {
   VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
   VkQueryPool timestamps_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  PipelineCache pipelines_;
 };
 
 }  // namespace facet::vk

@@ -10,10 +10,17 @@ Kernel::Kernel(Context& context, const KernelDesc& desc)
       buffer_count_(desc.buffer_count),
       image_count_(desc.image_count),
       push_constant_bytes_(desc.push_constant_bytes) {
-  VkDevice device = context.device();
   if (desc.push_constant_bytes > context.limits().maxPushConstantsSize)
     throw Error("kernel " + name_ + ": push constants exceed the device limit");
+  PipelineKey key{{desc.spirv.begin(), desc.spirv.end()}, desc.buffer_count, desc.image_count,
+                  desc.push_constant_bytes, {}};
+  for (const auto& constant : desc.specialization) key.specialization.emplace_back(constant.id, constant.value);
+  compiled_ = context.pipelines().get(std::move(key), [&] { return compile(context.device(), desc); });
+}
 
+std::shared_ptr<const CompiledKernel> Kernel::compile(VkDevice device, const KernelDesc& desc) {
+  auto compiled = std::make_shared<CompiledKernel>();
+  compiled->device = device;
   std::vector<VkDescriptorSetLayoutBinding> bindings(desc.buffer_count + desc.image_count);
   for (uint32_t i = 0; i < bindings.size(); ++i)
     bindings[i] = {i, i < desc.buffer_count ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1,
@@ -21,16 +28,16 @@ Kernel::Kernel(Context& context, const KernelDesc& desc)
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set_info.bindingCount = static_cast<uint32_t>(bindings.size());
   set_info.pBindings = bindings.data();
-  check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout_),
+  check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &compiled->set_layout),
         "vkCreateDescriptorSetLayout");
 
   VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, desc.push_constant_bytes};
   VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layout_info.setLayoutCount = 1;
-  layout_info.pSetLayouts = &set_layout_;
+  layout_info.pSetLayouts = &compiled->set_layout;
   layout_info.pushConstantRangeCount = desc.push_constant_bytes > 0 ? 1 : 0;
   layout_info.pPushConstantRanges = &range;
-  check(vkCreatePipelineLayout(device, &layout_info, nullptr, &layout_), "vkCreatePipelineLayout");
+  check(vkCreatePipelineLayout(device, &layout_info, nullptr, &compiled->layout), "vkCreatePipelineLayout");
 
   VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   module_info.codeSize = desc.spirv.size_bytes();
@@ -53,22 +60,12 @@ Kernel::Kernel(Context& context, const KernelDesc& desc)
   pipeline_info.stage.module = module;
   pipeline_info.stage.pName = "main";
   pipeline_info.stage.pSpecializationInfo = entries.empty() ? nullptr : &specialization;
-  pipeline_info.layout = layout_;
+  pipeline_info.layout = compiled->layout;
   VkResult result =
-      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline_);
+      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &compiled->pipeline);
   vkDestroyShaderModule(device, module, nullptr);
-  if (result != VK_SUCCESS) {
-    vkDestroyPipelineLayout(device, layout_, nullptr);
-    vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
-    check(result, ("vkCreateComputePipelines (" + name_ + ")").c_str());
-  }
-}
-
-Kernel::~Kernel() {
-  VkDevice device = context_->device();
-  vkDestroyPipeline(device, pipeline_, nullptr);
-  vkDestroyPipelineLayout(device, layout_, nullptr);
-  vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+  check(result, ("vkCreateComputePipelines (" + desc.name + ")").c_str());
+  return compiled;
 }
 
 double Kernel::dispatch(std::span<const Buffer* const> buffers, const void* push, glm::uvec3 groups) {
@@ -95,7 +92,7 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
   VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   alloc.descriptorPool = context_->descriptor_pool();
   alloc.descriptorSetCount = 1;
-  alloc.pSetLayouts = &set_layout_;
+  alloc.pSetLayouts = &compiled_->set_layout;
   VkDescriptorSet set = VK_NULL_HANDLE;
   check(vkAllocateDescriptorSets(device, &alloc, &set), "vkAllocateDescriptorSets");
   struct Release {
@@ -132,10 +129,10 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
     before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compiled_->pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compiled_->layout, 0, 1, &set, 0, nullptr);
     if (push_constant_bytes_ > 0)
-      vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, push_constant_bytes_, push);
+      vkCmdPushConstants(cmd, compiled_->layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, push_constant_bytes_, push);
     vkCmdDispatch(cmd, groups.x, groups.y, groups.z);
     // Make the shader's writes visible to host reads and to later transfers.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};

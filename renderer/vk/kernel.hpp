@@ -3,11 +3,13 @@
 // block.
 //
 // Specialization constants select features at pipeline creation, so a scene compiles only
-// what it uses. Each dispatch() is its own submission, so callers split long work into
+// what it uses; kernels with the same module and specialization share one compiled pipeline
+// (vk/pipeline_cache.hpp). Each dispatch() is its own submission, so callers split long work into
 // tiles and no single submission runs for seconds.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 
 #include "vk/buffer.hpp"
 #include "vk/context.hpp"
+#include "vk/pipeline_cache.hpp"
 #include "vk/storage_image.hpp"
 
 namespace facet::vk {
@@ -38,7 +41,6 @@ struct KernelDesc {
 class Kernel {
  public:
   Kernel(Context& context, const KernelDesc& desc);
-  ~Kernel();
   Kernel(const Kernel&) = delete;
   Kernel& operator=(const Kernel&) = delete;
 
@@ -55,9 +57,9 @@ class Kernel {
   uint32_t buffer_count_;
   uint32_t image_count_;
   uint32_t push_constant_bytes_;
-  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  static std::shared_ptr<const CompiledKernel> compile(VkDevice device, const KernelDesc& desc);
+
+  std::shared_ptr<const CompiledKernel> compiled_;
 };
 
 }  // namespace facet::vk

@@ -74,6 +74,43 @@ TEST(VkRuntime, KernelAppliesSpecializationAndPushConstants) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
+// Kernels with the same module and specialization share one compiled pipeline; another
+// specialization compiles its own, and each kernel computes with its own constant.
+TEST(VkRuntime, KernelsShareCompiledPipelinesPerSpecialization) {
+  auto context = test::make_validated_context();
+  const uint32_t count = 100;
+  std::vector<float> input(count, 4.0f);
+  auto in = vk::Buffer::from(*context, std::span<const float>(input));
+  vk::Buffer out(*context, count * sizeof(float));
+  const std::array<const vk::Buffer*, 2> bindings = {&in, &out};
+  struct {
+    float offset;
+    uint32_t count;
+  } push{0.0f, count};
+  auto scaled_by = [&](float scale) {
+    uint32_t bits;
+    std::memcpy(&bits, &scale, sizeof bits);
+    return vk::KernelDesc{.name = "scale_add", .spirv = scale_add_spv, .buffer_count = 2, .push_constant_bytes = 8,
+                          .specialization = {{0, bits}}};
+  };
+  const std::size_t before = context->pipelines().size();
+  auto first_of = [&](vk::Kernel& kernel) {
+    kernel.dispatch(bindings, &push, {(count + 63) / 64, 1, 1});
+    float first;
+    out.download(&first, sizeof first);
+    return first;
+  };
+  vk::Kernel twice(*context, scaled_by(2.0f));
+  vk::Kernel twice_again(*context, scaled_by(2.0f));
+  EXPECT_EQ(context->pipelines().size(), before + 1);
+  vk::Kernel thrice(*context, scaled_by(3.0f));
+  EXPECT_EQ(context->pipelines().size(), before + 2);
+  EXPECT_EQ(first_of(twice_again), 8.0f);
+  EXPECT_EQ(first_of(thrice), 12.0f);
+  EXPECT_EQ(first_of(twice), 8.0f);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
 TEST(VkRuntime, BufferBeyondTheStorageRangeIsRefused) {
   auto context = test::make_validated_context();
   const VkDeviceSize range = context->limits().maxStorageBufferRange;
