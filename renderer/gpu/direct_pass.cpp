@@ -77,7 +77,6 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                         .specialization = {{0, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
                                            {1, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
                                            {2, static_cast<uint32_t>(method.texture)},
-                                           {3, static_cast<uint32_t>(method.samples_per_axis)},
                                            {4, uses<DiffractionMaterial>(scene) ? 1u : 0u},
                                            {5, static_cast<uint32_t>(diffraction_.method)},
                                            {6, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u},
@@ -109,7 +108,7 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
       const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
       const int k = samples_per_axis_, strata = k * k;
       for (int s = 0; s < strata; ++s) {  // ss:K: one stratum per dispatch, accumulated in pixels_
-        GpuTile tile{uvec4(x0, y0, w, h), uvec4(s % k, s / k, s > 0 ? 1 : 0, s == strata - 1 ? 1 : 0), spread};
+        GpuTile tile{uvec4(x0, y0, w, h), uvec4(s % k, s / k, s, k), spread};
         local.gpu_ms += kernel_.dispatch(bindings, &tile, groups);
       }
       pixels_.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);

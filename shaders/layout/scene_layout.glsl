@@ -88,10 +88,12 @@ struct GpuColormap {
 };
 
 // Push constants of the per-pixel passes: the tile of the image this dispatch covers and, for K x K
-// supersampling run as K^2 dispatches, which stratum of each pixel this one traces.
+// supersampling run as K^2 dispatches, which stratum of each pixel this one traces (K is pushed, not
+// specialized, so every ss:K of a scene shares one compiled pipeline).
 struct GpuTile {
   uvec4 rect;     // x0, y0, width, height
-  uvec4 stratum;  // sx, sy in [0, K); z: 1 adds to the tile's pixels (not the first stratum); w: 1 scales by 1/K^2 (the last)
+  uvec4 stratum;  // sx, sy in [0, K); z: the stratum's index s = sy K + sx (s > 0 adds to the tile's pixels,
+                  // s = K^2 - 1 scales them by 1/K^2); w: K
   uvec4 spread;   // x: the tile's workgroups n, y: s, coprime to n: workgroup g renders block g s mod n (gpu/workgroup_order.hpp)
 };
 

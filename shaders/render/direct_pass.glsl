@@ -7,9 +7,8 @@
 //                      colour map), 2 colormip (MIP-mapped colour-mapped texture), 3 filtered (the
 //                      footprint's Gaussian N(mu, sigma^2) integrated against the colour map exactly),
 //                      4 filtered:table (the same Gaussian looked up in the map's prefiltered table)
-//   3 kSamplesPerAxis  K: K x K stratified rays per pixel, averaged (ss:K), one stratum per dispatch
-//                      (tile.stratum) so no invocation loops over samples: lavapipe ends an
-//                      invocation's loops after 65535 iterations in all (docs/diffraction.md)
+//   3 (unused: ss:K's K is pushed in tile.stratum.w, one stratum per dispatch, so no invocation loops
+//      over samples: lavapipe ends an invocation's loops after 65535 iterations in all, docs/diffraction.md)
 //   4 kHasDiffraction  diffraction gratings (render/diffraction_shading.glsl)
 //   5 kDiffractionMethod  how a grating's spectrum becomes a colour: 0 spectral (wavelength samples)
 //   6 kHasMicrosurface colour-mapped microsurfaces on finite planes, by kTextureMethod
@@ -28,7 +27,6 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = 0) const bool kHasMicroflake = false;
 layout(constant_id = 1) const bool kHasTexture = false;
 layout(constant_id = 2) const uint kTextureMethod = 0u;
-layout(constant_id = 3) const uint kSamplesPerAxis = 1u;
 layout(constant_id = 4) const bool kHasDiffraction = false;
 layout(constant_id = 5) const uint kDiffractionMethod = 0u;
 layout(constant_id = 6) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
@@ -119,13 +117,14 @@ void main() {
   uvec2 at = tile_position();
   uvec2 pixel = at + tile.rect.xy;
   if (at.x >= tile.rect.z || at.y >= tile.rect.w) return;
-  float step = 1.0 / float(kSamplesPerAxis);
+  uint k = tile.stratum.w;
+  float step = 1.0 / float(k);
   vec3 sample_radiance = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
   // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
   // end: the same float operations as averaging them within one invocation.
   uint i = at.y * tile.rect.z + at.x;
   vec3 sum = tile.stratum.z != 0u ? pixels[i].rgb + sample_radiance : sample_radiance;
-  pixels[i] = vec4(tile.stratum.w != 0u ? sum / float(kSamplesPerAxis * kSamplesPerAxis) : sum, 1.0);
+  pixels[i] = vec4(tile.stratum.z == k * k - 1u ? sum / float(k * k) : sum, 1.0);
 }
 
 #endif
