@@ -66,6 +66,8 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
                            const std::string& scene_name, BenchRecord record, const std::function<void()>& tick) {
   record.method = method.name;
   try {
+    // Each method's set-up includes compiling its pipelines, as `facet render` pays it alone.
+    context.pipelines().clear();
     const auto prepare_start = std::chrono::steady_clock::now();
     frames::PreparedFrames prepared(scene, method.render_method(), &context);
     const auto render = [&] { return prepared.render(scene.camera, reference.width, reference.height); };
