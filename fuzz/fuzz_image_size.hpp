@@ -12,13 +12,9 @@
 
 namespace facet::fuzz {
 
-// Only the libFuzzer programs skip; the replay programs (ctest's fuzz_replay.*) run every corpus and
-// regression input through the readers, large ones included.
-#ifdef FACET_LIBFUZZER
-inline constexpr bool kSkipCostlyInputs = true;
-#else
-inline constexpr bool kSkipCostlyInputs = false;
-#endif
+// Only the libFuzzer programs skip (libfuzzer_mode.cpp); the replay programs (ctest's fuzz_replay.*,
+// replay_main.cpp) run every corpus and regression input through the readers, large ones included.
+extern const bool kSkipCostlyInputs;
 
 inline constexpr std::int64_t kFuzzPixels = std::int64_t{1} << 16;  // 256 x 256
 

@@ -11,7 +11,14 @@
 #include <iterator>
 #include <vector>
 
+#include "fuzz_image_size.hpp"
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+
+// Replays run every input, large legal images included (fuzz_image_size.hpp).
+namespace facet::fuzz {
+const bool kSkipCostlyInputs = false;
+}
 
 namespace {
 
