@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "diffraction/diffraction_gpu.hpp"
-#include "diffraction/grating.hpp"
 #include "diffraction/spectral_tables.hpp"
 #include "diffraction_frames.hpp"
+#include "gpu/diffraction_eval.hpp"
+#include "scene/grating/grating.hpp"
 #include "vk/context.hpp"
 
 namespace {
@@ -71,10 +71,10 @@ void BM_GpuEval(benchmark::State& state) {
   t.N = static_cast<int>(state.range(0));
   if (t.N > t.stored_terms) return state.SkipWithError("the tables store fewer terms");
   const auto qs = queries(1 << 18);
-  evaluate_gpu(context, t, qs);  // JIT warm-up
+  facet::gpu::evaluate_diffraction(context, t, qs);  // JIT warm-up
   for (auto _ : state) {
     facet::gpu::BatchTiming timing;
-    evaluate_gpu(context, t, qs, &timing);
+    facet::gpu::evaluate_diffraction(context, t, qs, &timing);
     state.SetIterationTime(timing.gpu_ms * 1e-3);
   }
   state.SetItemsProcessed(state.iterations() * qs.size());

@@ -13,11 +13,11 @@
 #include <tbb/parallel_for.h>
 
 #include "diffraction/cie_tables.hpp"
-#include "diffraction/diffraction_gpu.hpp"
 #include "diffraction/exact_transform.hpp"
 #include "diffraction/order_wavelengths.hpp"
 #include "diffraction/preintegrated_tables.hpp"
 #include "diffraction_frames.hpp"
+#include "gpu/diffraction_eval.hpp"
 #include "orders_probe.hpp"
 #include "preintegrated_probe.hpp"
 
@@ -178,7 +178,7 @@ void BM_GpuSpectralEvaluations(benchmark::State& state) {
   static facet::vk::Context context{facet::vk::ContextOptions{}};
   for (auto _ : state) {
     facet::gpu::BatchTiming timing;
-    benchmark::DoNotOptimize(evaluate_gpu(context, s.tables, queries, &timing));
+    benchmark::DoNotOptimize(facet::gpu::evaluate_diffraction(context, s.tables, queries, &timing));
     state.SetIterationTime(1e-3 * timing.gpu_ms);
   }
   state.counters["evals_per_s"] = benchmark::Counter(double(queries.size()), benchmark::Counter::kIsIterationInvariantRate);

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "diffraction/order_wavelengths.hpp"
+#include "gpu/diffraction_layout.hpp"
 #include "orders_probe.spv.h"
 #include "vk/buffer.hpp"
 #include "vk/context.hpp"
@@ -51,7 +52,7 @@ inline OrdersProbeRun run_orders_probe(vk::Context& context, const diffraction::
                               .push_constant_bytes = sizeof(OrdersProbePush),
                               .specialization = {}});
   const auto& L = plan.lattice;
-  const diffraction::DiffractionTableInfo info = tables.info();
+  const gpu::DiffractionTableInfo info = gpu::table_info(tables);
   const OrdersProbePush push{glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach),
                              glm::vec4(L.k_min, L.k_max, L.peak_step, L.max_step),
                              glm::ivec4(L.repeats, 0, 0),

@@ -1,21 +1,21 @@
 #include "batch/input_hash.hpp"
 
+#include "common/content_hash.hpp"
 #include "common/error.hpp"
-#include "report/content_hash.hpp"
 
 namespace facet::batch {
 
 std::string scene_files_hash(const std::filesystem::path& scene) {
-  report::ContentHash hash;
+  ContentHash hash;
   const std::filesystem::path directory = scene.lexically_normal().parent_path();
-  for (const auto& file : report::scene_dependencies(scene))
+  for (const auto& file : scene_dependencies(scene))
     hash.add_file(file, file.lexically_relative(directory).generic_string());
   return hash.hex();
 }
 
 std::string item_inputs_hash(const std::string& scene_files, const Job& job, const Item& item,
                              const std::string& renderer_version) {
-  report::ContentHash hash;
+  ContentHash hash;
   // Fields separated by NUL, which none of them contains.
   const auto field = [&](const std::string& text) { hash.add(text + '\0'); };
   field(scene_files);
@@ -31,7 +31,7 @@ std::string item_inputs_hash(const std::string& scene_files, const Job& job, con
 
 std::string file_hash(const std::filesystem::path& file) {
   try {
-    report::ContentHash hash;
+    ContentHash hash;
     hash.add_file(file, "");
     return hash.hex();
   } catch (const Error&) {

@@ -9,7 +9,7 @@
 
 namespace facet::batch {
 
-// The scene file and every file it references (report::scene_dependencies), each named relative to
+// The scene file and every file it references (scene_dependencies), each named relative to
 // the scene's directory, so moving the whole tree keeps the hash. Throws facet::Error if unreadable.
 std::string scene_files_hash(const std::filesystem::path& scene);
 

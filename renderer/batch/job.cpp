@@ -9,7 +9,7 @@
 #include "batch/glob.hpp"
 #include "batch/items.hpp"
 #include "common/error.hpp"
-#include "scene/json_object_reader.hpp"
+#include "common/json_object_reader.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace facet::batch {

@@ -1,6 +1,6 @@
 // facet eval diffraction: Stam's diffraction BRDF of a grating (renderer/diffraction,
 // shaders/lib/diffraction_brdf.glsl; derivation in docs/diffraction.md).
-//   --grating JSON_OR_FILE   the grating (renderer/diffraction/grating.hpp lists the keys)
+//   --grating JSON_OR_FILE   the grating (renderer/scene/grating/grating.hpp lists the keys)
 //   in:  {"wi": [x, y, z], "wr": [x, y, z], "lambda_nm", "id"?}   (unit vectors, surface frame, z up)
 //   out: {"id", "brdf", "P2"}
 // The tables are built for the smallest wavelength and largest |w| among the input lines; a line
@@ -12,9 +12,9 @@
 
 #include "cli/eval_command.hpp"
 #include "cli/json_lines.hpp"
-#include "diffraction/diffraction_gpu.hpp"
 #include "diffraction/exact_transform.hpp"
-#include "diffraction/grating.hpp"
+#include "gpu/diffraction_eval.hpp"
+#include "scene/grating/grating.hpp"
 
 namespace facet::cli {
 
@@ -69,7 +69,7 @@ std::vector<nlohmann::json> evaluate(const DiffractionOptions& options, const di
   std::vector<DiffractionResult> results;
   if (options.eval.device == "gpu") {
     vk::Context context({options.eval.vulkan.device, options.eval.vulkan.validation});
-    results = diffraction::evaluate_gpu(context, tables, qs);
+    results = gpu::evaluate_diffraction(context, tables, qs);
     if (context.validation_message_count() > 0)
       throw Error("Vulkan validation reported " + std::to_string(context.validation_message_count()) + " messages");
   } else if (options.exact) {

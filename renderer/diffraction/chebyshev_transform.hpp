@@ -12,8 +12,8 @@
 
 #include "diffraction/diffraction_eval.hpp"
 #include "diffraction/exact_transform.hpp"
-#include "diffraction/grating.hpp"
 #include "diffraction/spectral_tables.hpp"
+#include "scene/grating/grating.hpp"
 
 namespace facet::diffraction {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "diffraction/diffraction_eval.hpp"
-#include "diffraction/grating.hpp"
 #include "diffraction/spectral_tables.hpp"
+#include "scene/grating/grating.hpp"
 
 namespace facet::diffraction {
 

@@ -8,10 +8,10 @@
 
 #include <glm/glm.hpp>
 
-#include "diffraction/grating.hpp"
 #include "diffraction/spectral_integration.hpp"
 #include "diffraction/spectral_tables.hpp"
 #include "kernels/shared.hpp"
+#include "scene/grating/grating.hpp"
 
 namespace facet::diffraction {
 

@@ -6,9 +6,9 @@
 #include <optional>
 #include <vector>
 
-#include "diffraction/diffraction_method.hpp"
 #include "diffraction/spectral_integration.hpp"
 #include "diffraction/spectral_tables.hpp"
+#include "scene/grating/diffraction_method.hpp"
 #include "scene/scene.hpp"
 
 namespace facet::diffraction {

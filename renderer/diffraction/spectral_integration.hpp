@@ -7,8 +7,8 @@
 
 #include <glm/glm.hpp>
 
-#include "diffraction/illuminant.hpp"
 #include "diffraction/spectral_tables.hpp"
+#include "scene/grating/illuminant.hpp"
 
 namespace facet::diffraction {
 

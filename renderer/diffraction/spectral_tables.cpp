@@ -41,10 +41,6 @@ int window_radius(double period_nm, double sigma_nm, double tolerance) {
   return std::max(0, static_cast<int>(std::ceil(reach - 0.5)));
 }
 
-DiffractionTableInfo SpectralTables::info() const {
-  return {ivec4(J, N, r, stored_terms), vec4(period_nm, sigma_nm, hs_nm, R0)};
-}
-
 std::vector<glm::vec2> SpectralTables::coefficients_f32() const {
   std::vector<glm::vec2> out(coefficients.size());
   std::transform(coefficients.begin(), coefficients.end(), out.begin(),

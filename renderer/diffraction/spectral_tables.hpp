@@ -8,16 +8,9 @@
 
 #include <glm/glm.hpp>
 
-#include "diffraction/grating.hpp"
+#include "scene/grating/grating.hpp"
 
 namespace facet::diffraction {
-
-using glm::ivec4;
-using glm::uvec4;
-using glm::vec4;
-#include "layout/diffraction_layout.glsl"
-static_assert(sizeof(DiffractionTableInfo) == 32);
-static_assert(sizeof(GpuDiffractionMaterial) == 176);
 
 // What the tables must cover, and how accurately.
 struct TableRange {
@@ -51,7 +44,6 @@ struct SpectralTables {
   // diffraction_table_entry(n, jx, jy, J, stored_terms).index (shaders/lib/diffraction_table.glsl).
   std::vector<std::complex<double>> coefficients;
 
-  DiffractionTableInfo info() const;
   std::vector<glm::vec2> coefficients_f32() const;
 };
 

@@ -1,6 +1,6 @@
 #include "frames/frame_metadata.hpp"
 
-#include "diffraction/diffraction_method.hpp"
+#include "scene/grating/diffraction_method.hpp"
 
 namespace facet::frames {
 

@@ -1,16 +1,16 @@
 #include "gpu/batch_eval.hpp"
 
 #include <algorithm>
-#include <array>
+#include <vector>
 
 #include "common/error.hpp"
-#include "vk/buffer.hpp"
 #include "vk/kernel.hpp"
 
 namespace facet::gpu {
 
 std::vector<EvalRecord> run_batch_eval(vk::Context& context, const char* name, std::span<const uint32_t> spirv,
-                                       std::span<const EvalRecord> inputs, BatchTiming* timing) {
+                                       std::span<const EvalRecord> inputs, BatchTiming* timing,
+                                       std::span<const vk::Buffer* const> tables) {
   std::vector<EvalRecord> outputs(inputs.size());
   if (inputs.empty()) return outputs;
   const uint64_t bytes = inputs.size_bytes();
@@ -21,10 +21,11 @@ std::vector<EvalRecord> run_batch_eval(vk::Context& context, const char* name, s
   vk::Buffer out(context, bytes);
   vk::Kernel kernel(context, {.name = name,
                               .spirv = spirv,
-                              .buffer_count = 2,
+                              .buffer_count = static_cast<uint32_t>(2 + tables.size()),
                               .push_constant_bytes = sizeof(EvalRange),
                               .specialization = {}});
-  const std::array<const vk::Buffer*, 2> bindings = {&in, &out};
+  std::vector<const vk::Buffer*> bindings = {&in, &out};
+  bindings.insert(bindings.end(), tables.begin(), tables.end());
   const uint64_t per_dispatch =
       static_cast<uint64_t>(context.limits().maxComputeWorkGroupCount[0]) * FACET_EVAL_WORKGROUP;
   BatchTiming local;

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "vk/buffer.hpp"
 #include "vk/context.hpp"
 
 namespace facet::gpu {
@@ -23,8 +24,10 @@ struct BatchTiming {
   int dispatches = 0;
 };
 
-// One output record per input record, in order.
+// One output record per input record, in order. `tables` are bound after the input and output
+// records (bindings 2, 3, ...), for kernels that read more than the records (eval_diffraction).
 std::vector<EvalRecord> run_batch_eval(vk::Context& context, const char* name, std::span<const uint32_t> spirv,
-                                       std::span<const EvalRecord> inputs, BatchTiming* timing = nullptr);
+                                       std::span<const EvalRecord> inputs, BatchTiming* timing = nullptr,
+                                       std::span<const vk::Buffer* const> tables = {});
 
 }  // namespace facet::gpu

@@ -28,7 +28,7 @@ DiffractionMethod scene_diffraction_method(const Scene& scene, const diffraction
   return chosen.value_or(DiffractionMethod::Spectral);
 }
 
-void append_fast_paths(FastPathData& data, diffraction::GpuDiffractionMaterial& material, const Scene& scene,
+void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
                        std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
                        DiffractionMethod method, std::uint64_t max_buffer_bytes) {
   const auto& source = std::get<DiffractionMaterial>(scene.materials[scene_material]);

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "diffraction/prepared_diffraction.hpp"
+#include "gpu/diffraction_layout.hpp"
 #include "scene/scene.hpp"
 
 namespace facet::gpu {
@@ -33,7 +34,7 @@ struct FastPathData {
 // and appends its tables to `data`. The preintegrated tables are refused (facet::Error, one line
 // with the sizes) when `data` would exceed max_buffer_bytes; a grating that is not periodic gets
 // periodic = 0, and the pass then runs the spectral path for it under `orders`.
-void append_fast_paths(FastPathData& data, diffraction::GpuDiffractionMaterial& material, const Scene& scene,
+void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
                        std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
                        diffraction::DiffractionMethod method, std::uint64_t max_buffer_bytes);
 

@@ -8,10 +8,9 @@
 #include "common/error.hpp"
 #include "diffraction/spectral_tables.hpp"
 #include "gpu/diffraction_fast_upload.hpp"
+#include "gpu/diffraction_layout.hpp"
 
 namespace facet::gpu {
-
-using diffraction::GpuDiffractionMaterial;
 
 namespace {
 
@@ -59,7 +58,7 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
     const std::vector<glm::vec2> table = prepared->tables.coefficients_f32();
     const diffraction::WavelengthSamples& s = prepared->samples;
     GpuDiffractionMaterial entry{};  // the fast paths' fields stay zero unless their method fills them
-    entry.table = prepared->tables.info();
+    entry.table = table_info(prepared->tables);
     entry.offsets = glm::uvec4(coefficients.size(), wavelengths.size(), s.lambda_nm.size(), 0);
     append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method,
                       context.limits().maxStorageBufferRange);

@@ -6,7 +6,7 @@
 //   filtered   the footprint's Gaussian of texture values integrated against the colour map
 //   filtered:table   the same Gaussian looked up in the colour map's prefiltered table T(mu, sigma)
 //   diffraction:M    `naive`, with every diffraction material rendered by method M (spectral,
-//                    preintegrated, orders; diffraction/diffraction_method.hpp)
+//                    preintegrated, orders; scene/grating/diffraction_method.hpp)
 #pragma once
 
 #include <string>

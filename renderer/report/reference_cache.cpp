@@ -2,9 +2,9 @@
 
 #include <chrono>
 
+#include "common/content_hash.hpp"
 #include "common/error.hpp"
 #include "image/exr_io.hpp"
-#include "report/content_hash.hpp"
 
 namespace facet::report {
 

@@ -2,7 +2,7 @@
 // so one scene file describes an animation (scenes/README.md, `camera_path`; docs/batch.md).
 #pragma once
 
-#include "scene/json_object_reader.hpp"
+#include "common/json_object_reader.hpp"
 #include "scene/scene.hpp"
 
 namespace facet {

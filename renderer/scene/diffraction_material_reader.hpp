@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "scene/json_object_reader.hpp"
+#include "common/json_object_reader.hpp"
 #include "scene/scene.hpp"
 
 namespace facet {

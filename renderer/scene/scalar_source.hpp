@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "scene/json_object_reader.hpp"
+#include "common/json_object_reader.hpp"
 #include "scene/scene.hpp"
 
 namespace facet {

@@ -17,10 +17,10 @@
 #include <glm/glm.hpp>
 
 #include "assets/scalar_field.hpp"
-#include "diffraction/diffraction_method.hpp"
-#include "diffraction/grating.hpp"
-#include "diffraction/illuminant.hpp"
 #include "scene/colormap.hpp"
+#include "scene/grating/diffraction_method.hpp"
+#include "scene/grating/grating.hpp"
+#include "scene/grating/illuminant.hpp"
 
 namespace facet {
 

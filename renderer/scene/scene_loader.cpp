@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "common/json_object_reader.hpp"
 #include "scene/camera_path.hpp"
 #include "scene/diffraction_material_reader.hpp"
 #include "scene/gltf_loader.hpp"
-#include "scene/json_object_reader.hpp"
 #include "scene/plane_frame.hpp"
 #include "scene/subpixel_materials.hpp"
 #include "scene/transform.hpp"

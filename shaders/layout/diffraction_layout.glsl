@@ -1,7 +1,6 @@
 // The spectral tables of one grating as the diffraction shaders read them, shared by GLSL and
-// C++ (renderer/diffraction/diffraction_gpu.hpp, renderer/gpu/diffraction_upload.hpp). vec4-only,
-// so std430 equals the C++ layout. The coefficients themselves are a vec2 array indexed by
-// lib/diffraction_table.glsl.
+// C++ (renderer/gpu/diffraction_layout.hpp). vec4-only, so std430 equals the C++ layout. The
+// coefficients themselves are a vec2 array indexed by lib/diffraction_table.glsl.
 #ifndef FACET_DIFFRACTION_LAYOUT_GLSL
 #define FACET_DIFFRACTION_LAYOUT_GLSL
 

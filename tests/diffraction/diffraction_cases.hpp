@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "diffraction/diffraction_eval.hpp"
-#include "diffraction/grating.hpp"
 #include "diffraction/spectral_tables.hpp"
+#include "scene/grating/grating.hpp"
 
 namespace facet::test {
 

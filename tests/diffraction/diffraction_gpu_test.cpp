@@ -6,9 +6,9 @@
 #include <limits>
 #include <random>
 
-#include "diffraction/diffraction_gpu.hpp"
 #include "diffraction/exact_transform.hpp"
 #include "diffraction_cases.hpp"
+#include "gpu/diffraction_eval.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -54,7 +54,7 @@ TEST(DiffractionGpu, FloatShaderMatchesDoubleKernel) {
     const auto g = test::grating(json);
     const auto t = diffraction::build_spectral_tables(g);
     const auto qs = random_queries(3000, 5);
-    const auto gpu = diffraction::evaluate_gpu(*context, t, qs);
+    const auto gpu = facet::gpu::evaluate_diffraction(*context, t, qs);
     ASSERT_EQ(gpu.size(), qs.size());
     double worst_ratio = 0.0;
     for (size_t i = 0; i < qs.size(); ++i) {
@@ -91,7 +91,7 @@ TEST(DiffractionGpu, TallGratingUpToFourPiInFloat) {
       if (std::abs(x_r) < 0.99) qs.push_back(rounded_to_float({wi, direction(x_r, 0.0), 250.0}));
     }
   qs.push_back(rounded_to_float({direction(0, 0), direction(0, 0), 250.0}));  // x = 4 pi exactly
-  const auto gpu = diffraction::evaluate_gpu(*context, t, qs);
+  const auto gpu = facet::gpu::evaluate_diffraction(*context, t, qs);
   double worst_gpu = 0.0, worst_cpu = 0.0;
   for (size_t i = 0; i < qs.size(); ++i) {
     const double e = test::field_magnitude(exact.evaluate(qs[i]).P2, t.sigma_nm);
@@ -120,7 +120,7 @@ TEST(DiffractionGpu, FiniteOnTheWholeDomain) {
                       {std::sin(tr) * std::cos(phi), std::sin(tr) * std::sin(phi), k == 8 ? 0.0 : std::cos(tr)},
                       j % 2 ? 380.0 : 780.0});
       }
-  for (const auto& r : diffraction::evaluate_gpu(*context, t, qs)) {
+  for (const auto& r : gpu::evaluate_diffraction(*context, t, qs)) {
     ASSERT_TRUE(std::isfinite(r.brdf) && r.brdf >= 0.0);
     ASSERT_TRUE(std::isfinite(r.P2) && r.P2 >= 0.0);
   }

@@ -91,7 +91,7 @@ TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine
   const Scene scene = load_scene(kPlate);
   const auto prepared = diffraction::prepare_diffraction(std::get<DiffractionMaterial>(scene.materials[0]));
   gpu::FastPathData data;
-  diffraction::GpuDiffractionMaterial entry{};
+  gpu::GpuDiffractionMaterial entry{};
   try {
     gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096);
     FAIL() << "4 KiB of tables accepted";
@@ -118,7 +118,7 @@ TEST(DiffractionFastPathsRender, OrdersBeyondTheLoopLimitAreRefusedWithOneLine) 
   const auto prepared = diffraction::prepare_diffraction(material, settings);
   EXPECT_LE(gpu::diffraction_loop_iterations(prepared) + gpu::kTraceLoopReserve, gpu::kLoopIterationLimit);
   gpu::FastPathData data;
-  diffraction::GpuDiffractionMaterial entry{};
+  gpu::GpuDiffractionMaterial entry{};
   try {
     gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Orders, 1u << 30);
     FAIL() << "orders accepted";

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "support/temp_dir.hpp"
-#include "report/content_hash.hpp"
+#include "common/content_hash.hpp"
 #include "report/headline.hpp"
 #include "report/method_catalogue.hpp"
 #include "report/pareto.hpp"

@@ -10,12 +10,13 @@
 #include "gpu/batch_eval.hpp"
 #include "vk/context.hpp"
 
-namespace facet::diffraction {
+namespace facet::gpu {
 
 // One result per query, in order. Throws facet::Error if the tables exceed the device's storage
 // buffer range.
-std::vector<DiffractionResult> evaluate_gpu(vk::Context& context, const SpectralTables& tables,
-                                            std::span<const DiffractionQuery> queries,
-                                            gpu::BatchTiming* timing = nullptr);
+std::vector<diffraction::DiffractionResult> evaluate_diffraction(vk::Context& context,
+                                                                 const diffraction::SpectralTables& tables,
+                                                                 std::span<const diffraction::DiffractionQuery> queries,
+                                                                 BatchTiming* timing = nullptr);
 
-}  // namespace facet::diffraction
+}  // namespace facet::gpu

@@ -1,4 +1,4 @@
-#include "diffraction/grating.hpp"
+#include "scene/grating/grating.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -6,9 +6,9 @@
 #include <sstream>
 
 #include "common/error.hpp"
-#include "diffraction/grating_patterns.hpp"
-#include "diffraction/height_map_file.hpp"
-#include "scene/json_object_reader.hpp"
+#include "common/json_object_reader.hpp"
+#include "scene/grating/grating_patterns.hpp"
+#include "scene/grating/height_map_file.hpp"
 
 namespace facet::diffraction {
 

@@ -12,7 +12,7 @@
 
 #include "cpu/ray_caster.hpp"
 #include "scene/bvh.hpp"
-#include "test_meshes.hpp"
+#include "scene/test_meshes.hpp"
 
 namespace facet {
 namespace {

@@ -9,8 +9,8 @@
 #include <random>
 #include <thread>
 
-#include "assets/heightfield_reference.hpp"
 #include "common/error.hpp"
+#include "heightfield_reference.hpp"
 
 namespace facet {
 namespace {

@@ -1,11 +1,11 @@
-#include "diffraction/height_map_file.hpp"
+#include "scene/grating/height_map_file.hpp"
 
 #include <cmath>
 
 #include "common/error.hpp"
-#include "diffraction/gsf_file.hpp"
 #include "image/exr_io.hpp"
 #include "image/png_io.hpp"
+#include "scene/grating/gsf_file.hpp"
 
 namespace facet::diffraction {
 

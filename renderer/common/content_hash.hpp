@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace facet::report {
+namespace facet {
 
 // Accumulates bytes into a 128-bit MD5 digest (collisions are not a concern for a cache key:
 // nobody forges scenes against it), returned as 32 lowercase hex digits.
@@ -31,4 +31,4 @@ class ContentHash {
 // a glTF) that names an existing regular file relative to that file's directory. Sorted, unique.
 std::vector<std::filesystem::path> scene_dependencies(const std::filesystem::path& scene_file);
 
-}  // namespace facet::report
+}  // namespace facet

@@ -1,4 +1,4 @@
-#include "report/content_hash.hpp"
+#include "common/content_hash.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -10,7 +10,7 @@
 
 #include "common/error.hpp"
 
-namespace facet::report {
+namespace facet {
 
 struct ContentHash::State {
   boost::uuids::detail::md5 md5;
@@ -89,4 +89,4 @@ std::vector<std::filesystem::path> scene_dependencies(const std::filesystem::pat
   return {found.begin(), found.end()};
 }
 
-}  // namespace facet::report
+}  // namespace facet

@@ -1,4 +1,4 @@
-#include "scene/json_object_reader.hpp"
+#include "common/json_object_reader.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "diffraction/gsf_file.hpp"
+#include "scene/grating/gsf_file.hpp"
 
 #include <bit>
 #include <cmath>

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include <boost/math/quadrature/gauss.hpp>
-#include <boost/math/special_functions/gamma.hpp>
 
 #include "kernels/shared.hpp"
+#include "support/chi_square.hpp"
 
 namespace {
 
@@ -68,26 +68,6 @@ Histogram expected_histogram(const Case& c) {
   return h;
 }
 
-// p-value of Pearson's statistic with cells of expectation < 5 pooled into one.
-double chi_square_p_value(const Histogram& h) {
-  double chi2 = 0.0, pooled_e = 0.0, pooled_o = 0.0;
-  int cells = 0;
-  for (std::size_t k = 0; k < h.expected.size(); ++k) {
-    if (h.expected[k] < 5.0) {
-      pooled_e += h.expected[k];
-      pooled_o += h.observed[k];
-      continue;
-    }
-    chi2 += (h.observed[k] - h.expected[k]) * (h.observed[k] - h.expected[k]) / h.expected[k];
-    ++cells;
-  }
-  if (pooled_e > 0.0) {
-    chi2 += (pooled_o - pooled_e) * (pooled_o - pooled_e) / std::max(pooled_e, 1.0);
-    ++cells;
-  }
-  return boost::math::gamma_q(0.5 * (cells - 1), 0.5 * chi2);
-}
-
 const std::vector<Case> kCases = {
     {NDF_BECKMANN, 0.3, 0.8}, {NDF_BECKMANN, 0.6, 0.2}, {NDF_BECKMANN, 0.6, -0.3}, {NDF_BECKMANN, 1.5, 1.0},
     {NDF_GGX, 0.3, 0.8},      {NDF_GGX, 0.6, 0.2},      {NDF_GGX, 0.6, -0.3},      {NDF_GGX, 1.5, 1.0},
@@ -115,7 +95,7 @@ TEST(VisibleNormalSampling, ChiSquare) {
       int j = std::min(kPhiCells - 1, int(ph / (2 * kPi) * kPhiCells));
       h.observed[i * kPhiCells + j] += 1.0;
     }
-    double p = chi_square_p_value(h);
+    double p = facet::test::chi_square_p_value(h.observed, h.expected);
     EXPECT_GT(p, 0.01 / kCases.size()) << "ndf " << c.ndf << " param " << c.param << " wi_z " << c.wi_z;
     std::printf("ndf %d param %g wi_z %g: p = %.3g\n", c.ndf, c.param, c.wi_z, p);
   }

@@ -1,4 +1,4 @@
-#include "diffraction/grating_patterns.hpp"
+#include "scene/grating/grating_patterns.hpp"
 
 #include <cmath>
 #include <functional>
