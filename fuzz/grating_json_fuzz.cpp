@@ -7,7 +7,7 @@
 #include <string>
 
 #include "common/error.hpp"
-#include "diffraction/grating.hpp"
+#include "scene/grating/grating.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // Text only: a string that is not JSON is taken as a file path, and the fuzzer must not open files.

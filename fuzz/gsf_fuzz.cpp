@@ -6,7 +6,7 @@
 
 #include "common/error.hpp"
 #include "fuzz_input_file.hpp"
-#include "diffraction/gsf_file.hpp"
+#include "scene/grating/gsf_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const facet::fuzz::FuzzInputFile input(data, size, ".gsf");

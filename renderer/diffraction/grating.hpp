@@ -1,5 +1,0 @@
-// Forwards to scene/grating/grating.hpp, where gratings moved (they are scene data), for the fuzz
-// targets that still include it here; remove once fuzz/ includes the new path.
-#pragma once
-
-#include "scene/grating/grating.hpp"
