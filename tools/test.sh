@@ -3,7 +3,7 @@
 # UndefinedBehaviorSanitizer and libFuzzer coverage on every target, warnings as errors. Then:
 #   1. every test (Vulkan validation on: a validation message or a sanitizer report fails the test),
 #      including the replay of every fuzz corpus and regression input;
-#   2. every fuzz target for FUZZ_SECONDS (default 30), two at a time (docs/hardening.md).
+#   2. every fuzz target for FUZZ_SECONDS (default 15), two at a time (docs/hardening.md).
 # (clang-14, Debian's default, cannot compile the shared kernels' C++20 parenthesized aggregate
 # initialisation; tools/quickstart.sh builds with gcc.)
 set -euo pipefail
@@ -14,4 +14,4 @@ cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++-16 -DCMAKE_BUILD_TYPE=Releas
   -DFACET_SANITIZE=address,undefined -DFACET_FUZZ=ON -DFACET_BUILD_BENCHMARKS=OFF
 cmake --build "$build" -j"$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)" --timeout 900
-bash tools/fuzz_all.sh "${FUZZ_SECONDS:-30}" "$build"
+bash tools/fuzz_all.sh "${FUZZ_SECONDS:-15}" "$build"

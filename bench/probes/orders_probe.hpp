@@ -1,5 +1,5 @@
 // Runs shaders/render/diffraction_orders.glsl on the GPU through the test probe
-// (bench/probes/orders_probe.comp): used by the GPU test and the benchmark.
+// (bench/probes/orders_probe.comp, run by direction_pair_probe.hpp): used by the GPU test and the benchmark.
 #pragma once
 
 #include <array>
@@ -9,10 +9,8 @@
 
 #include "diffraction/order_wavelengths.hpp"
 #include "gpu/diffraction_layout.hpp"
+#include "direction_pair_probe.hpp"
 #include "orders_probe.spv.h"
-#include "vk/buffer.hpp"
-#include "vk/context.hpp"
-#include "vk/kernel.hpp"
 
 namespace facet::test {
 
@@ -27,30 +25,14 @@ struct OrdersProbePush {
   uint32_t count;
 };
 
-struct OrdersProbeRun {
-  std::vector<glm::dvec3> rgb;
-  double gpu_ms;
-};
-
-inline OrdersProbeRun run_orders_probe(vk::Context& context, const diffraction::SpectralTables& tables,
-                                       const diffraction::OrderWavelengths& plan,
-                                       const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs) {
-  std::vector<glm::vec4> queries, observer;
-  for (const auto& [wi, wr] : pairs) {
-    queries.emplace_back(glm::vec3(wi), 0.0f);
-    queries.emplace_back(glm::vec3(wr), 0.0f);
-  }
+inline ProbeRun run_orders_probe(vk::Context& context, const diffraction::SpectralTables& tables,
+                                 const diffraction::OrderWavelengths& plan,
+                                 const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs) {
+  std::vector<glm::vec4> observer;
   for (const glm::dvec3& o : plan.observer) observer.emplace_back(glm::vec3(o), 0.0f);
   const std::vector<glm::vec2> coefficients = tables.coefficients_f32();
-  auto in = vk::Buffer::from(context, std::span<const glm::vec4>(queries));
-  vk::Buffer out(context, pairs.size() * sizeof(glm::vec4));
   auto table = vk::Buffer::from(context, std::span<const glm::vec2>(coefficients));
   auto observer_buffer = vk::Buffer::from(context, std::span<const glm::vec4>(observer));
-  vk::Kernel kernel(context, {.name = "orders_probe",
-                              .spirv = orders_probe_spv,
-                              .buffer_count = 4,
-                              .push_constant_bytes = sizeof(OrdersProbePush),
-                              .specialization = {}});
   const auto& L = plan.lattice;
   const gpu::DiffractionTableInfo info = gpu::table_info(tables);
   const OrdersProbePush push{glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach),
@@ -61,13 +43,8 @@ inline OrdersProbeRun run_orders_probe(vk::Context& context, const diffraction::
                              float(plan.lambda0_nm),
                              static_cast<int>(plan.observer.size()),
                              static_cast<uint32_t>(pairs.size())};
-  const std::array<const vk::Buffer*, 4> bindings = {&in, &out, &table, &observer_buffer};
-  OrdersProbeRun run;
-  run.gpu_ms = kernel.dispatch(bindings, &push, {static_cast<uint32_t>((pairs.size() + 63) / 64), 1, 1});
-  std::vector<glm::vec4> raw(pairs.size());
-  out.download(raw.data(), raw.size() * sizeof(glm::vec4));
-  for (const auto& r : raw) run.rgb.emplace_back(glm::vec3(r));
-  return run;
+  const std::array<const vk::Buffer*, 2> tables_bound = {&table, &observer_buffer};
+  return run_direction_pair_probe(context, "orders_probe", orders_probe_spv, pairs, tables_bound, push);
 }
 
 }  // namespace facet::test

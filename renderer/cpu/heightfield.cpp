@@ -1,6 +1,7 @@
 #include "cpu/heightfield.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -40,12 +41,6 @@ double positive_modulo(double x, double period) {
   double r = std::fmod(x, period);
   if (r < 0.0) r += period;
   return r < period ? r : 0.0;  // −tiny + period rounds to period
-}
-
-int ceil_log2(int n) {
-  int levels = 0;
-  while ((1LL << levels) < n) ++levels;
-  return levels;
 }
 
 }  // namespace
@@ -123,7 +118,8 @@ HeightField::HeightField(HeightFieldGrid grid, const HeightFieldPlacement& place
   if (tiles_x > (1 << 24) || tiles_y > (1 << 24)) throw Error("height field: patch spans more than 2^24 tiles");
   tiles_x_ = static_cast<int>(tiles_x);
   tiles_y_ = static_cast<int>(tiles_y);
-  tile_levels_ = ceil_log2(std::max(tiles_x_, tiles_y_));
+  // ceil(log2 n) for n >= 1
+  tile_levels_ = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(std::max(tiles_x_, tiles_y_) - 1)));
   // Relative rounding of coordinates and heights is ~1e-16; the widening only adds traversal work.
   margin_xy_ = 1e-12 * std::max({p.size.x / texel_size_, p.size.y / texel_size_, 1.0});
   margin_z_ = 1e-12 * std::max({std::abs(range_.min), std::abs(range_.max), texel_size_});

@@ -1,6 +1,7 @@
 #include "gpu/microsurface_upload.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -119,12 +120,6 @@ void append_corner_heights(TextureData& data, uint vertex_level, uint count) {
   }
 }
 
-int ceil_log2(std::int64_t n) {
-  int levels = 0;
-  while ((std::int64_t{1} << levels) < n) ++levels;
-  return levels;
-}
-
 }  // namespace
 
 HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material, glm::dvec2 patch_size) {
@@ -132,6 +127,7 @@ HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material
   const std::int64_t tiles_x = static_cast<std::int64_t>(std::ceil(patch_size.x / (static_cast<double>(w) * material.texel_size)));
   const std::int64_t tiles_y = static_cast<std::int64_t>(std::ceil(patch_size.y / (static_cast<double>(h) * material.texel_size)));
   HeightFieldTraceCost cost;
+  const auto ceil_log2 = [](std::int64_t n) { return static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n - 1))); };  // n >= 1
   cost.levels = ceil_log2(std::max(w, h)) + ceil_log2(std::max(tiles_x, tiles_y));
   // A line crosses at most C - 1 column and R - 1 row boundaries of a C x R grid of nodes, and each
   // crossing adds at most 1.5 nodes whose closed boxes it touches (3 at a corner): < 2 (C + R) per level.

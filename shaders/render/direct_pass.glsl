@@ -74,8 +74,10 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   // Offset the shadow ray's origin by a distance relative to the scene's scale at p.
   float visibility = dot(n, l) > 0.0 && occluded(p + n * (1e-4 * max(1.0, length(p))), l, hit, n, kTracesHeightFields) ? 0.0 : 1.0;
   if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE)  // finite planes only (scene loader)
-    return microsurface_radiance(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
-                                 camera_ray(film + vec2(0.0, pixel_step)), l, visibility, false);
+    return microsurface_radiance(m, planes[hit.index],
+                                 microsurface_footprint(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
+                                                        camera_ray(film + vec2(0.0, pixel_step))),
+                                 d, l, visibility, false);
   if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
     return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
                                visibility, globals.ambient.rgb);

@@ -73,6 +73,14 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   return f;
 }
 
+// The t-interval where o + t d lies in [lo, hi] along one axis (d = 0: all t or none).
+vec2 heightfield_slab(float o, float d, float inv_d, float lo, float hi) {
+  if (d == 0.0) return o >= lo && o <= hi ? vec2(-kHeightFieldFar, kHeightFieldFar) : vec2(kHeightFieldFar, -kHeightFieldFar);
+  float ta = (lo - o) * inv_d, tb = (hi - o) * inv_d;
+  return d > 0.0 ? vec2(ta, tb) : vec2(tb, ta);
+}
+
+// The ray in the field's coordinates, limited to the part over the rectangle (before t_max).
 HeightFieldRay heightfield_ray(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, float t_max) {
   vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
   float delta = m.albedo.w;
@@ -82,25 +90,11 @@ HeightFieldRay heightfield_ray(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, fl
   r.d = vec3(dot(d, t) / delta, dot(d, b) / delta, dot(d, n));
   r.inv_d = 1.0 / r.d;
   vec2 extent = 2.0 * plane.uv_half_size.zw / delta;
-  r.t_lo = 0.0;
-  r.t_hi = t_max;
-  for (int axis = 0; axis < 2; ++axis) {
-    if (r.d[axis] == 0.0) {
-      if (!(r.o[axis] >= 0.0 && r.o[axis] <= extent[axis])) r.t_hi = -1.0;
-      continue;
-    }
-    float ta = -r.o[axis] * r.inv_d[axis], tb = (extent[axis] - r.o[axis]) * r.inv_d[axis];
-    r.t_lo = max(r.t_lo, min(ta, tb));
-    r.t_hi = min(r.t_hi, max(ta, tb));
-  }
+  vec2 x = heightfield_slab(r.o.x, r.d.x, r.inv_d.x, 0.0, extent.x);
+  vec2 y = heightfield_slab(r.o.y, r.d.y, r.inv_d.y, 0.0, extent.y);
+  r.t_lo = max(0.0, max(x.x, y.x));
+  r.t_hi = min(t_max, min(x.y, y.y));
   return r;
-}
-
-// The t-interval where o + t d lies in [lo, hi] along one axis (d = 0: all t or none).
-vec2 heightfield_slab(float o, float d, float inv_d, float lo, float hi) {
-  if (d == 0.0) return o >= lo && o <= hi ? vec2(-kHeightFieldFar, kHeightFieldFar) : vec2(kHeightFieldFar, -kHeightFieldFar);
-  float ta = (lo - o) * inv_d, tb = (hi - o) * inv_d;
-  return d > 0.0 ? vec2(ta, tb) : vec2(tb, ta);
 }
 
 // A node: (level, i, j, tile). Levels above `top` are groups of 2^(level - top) tiles squared at

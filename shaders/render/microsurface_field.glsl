@@ -13,7 +13,8 @@
 // (T1). p: the hit, n: its micro-normal facing the viewer, d_dx, d_dy: the neighbouring pixels' rays.
 vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, vec3 o, vec3 d, vec3 p, vec3 n, vec3 d_dx, vec3 d_dy, vec3 l) {
   GpuPlane plane = planes[hit.index];
-  float w = kTextureMethod >= 3u ? microsurface_trace_weight(m, plane, o, d, p, d_dx, d_dy) : 1.0;
+  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy);
+  float w = kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0;
   vec3 c = vec3(0.0);
   if (w > 0.0) {
     // Hits are exact to a few float ulps, and the field's detail is finer than the macro-surfaces' offset.
@@ -24,7 +25,7 @@ vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, vec3 o, vec3 d, vec3 p,
     vec3 flat_n = dot(plane.normal.xyz, d) > 0.0 ? -plane.normal.xyz : plane.normal.xyz;
     Hit flat_hit = Hit(hit.t, flat_n, hit.material, kPlane, hit.index, vec2(0.0));
     float visibility = dot(flat_n, l) > 0.0 && occluded(p + flat_n * (1e-4 * max(1.0, length(p))), l, flat_hit, flat_n, false) ? 0.0 : 1.0;
-    c += (1.0 - w) * microsurface_radiance(m, plane, o, d, p, d_dx, d_dy, l, visibility, true);
+    c += (1.0 - w) * microsurface_radiance(m, plane, fp, d, l, visibility, true);
   }
   return c;
 }

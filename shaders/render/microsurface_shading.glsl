@@ -149,8 +149,7 @@ MicrosurfaceFootprint microsurface_footprint(GpuMaterial m, GpuPlane plane, vec3
 // How much of `filtered`'s answer comes from the traced field: 1 where the footprint's longer axis is
 // within one texel (one ray resolves the bilinear surface), 0 from two texels on (the statistics),
 // linear in between (docs/microsurface_filtering.md, "Across scales").
-float microsurface_trace_weight(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy) {
-  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy);
+float microsurface_trace_weight(MicrosurfaceFootprint fp) {
   return clamp(2.0 - max(length(fp.duv_dx * fp.size), length(fp.duv_dy * fp.size)), 0.0, 1.0);
 }
 
@@ -164,14 +163,12 @@ float microsurface_trace_level(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, ve
   return anisotropic_footprint(fp.duv_dx, fp.duv_dy, fp.size, float(m.texture.y), kMaxAnisotropicTaps).lod;
 }
 
-// The radiance of microsurface `m` on `plane` by its footprint's statistics (methods mip, colormip,
-// filtered) hit at p by the ray o + t d; d_dx, d_dy: the rays through the neighbouring pixel positions
-// (the footprint); visibility of the light from p.
-vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy,
-                           vec3 l_world, float visibility, bool traced) {
+// The radiance of microsurface `m` on `plane` by the statistics of footprint fp (methods mip, colormip,
+// filtered) of the ray direction d; visibility of the light from the hit.
+vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint fp, vec3 d, vec3 l_world,
+                           float visibility, bool traced) {
   vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
   float delta = m.albedo.w;
-  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy);
   vec2 q = fp.q, size = fp.size, duv_dx = fp.duv_dx, duv_dy = fp.duv_dy;
   vec3 v = vec3(dot(-d, t), dot(-d, b), dot(-d, n)) / length(d);
   vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, n));

@@ -331,7 +331,7 @@ TEST(Orders, GpuMatchesTheDoubleTwin) {
       const glm::dvec2 r = -uv - glm::dvec2(wi);
       if (glm::dot(r, r) < 1.0) pairs.emplace_back(wi, direction(r.x, r.y));
     }
-    const test::OrdersProbeRun run = test::run_orders_probe(*context, c.tables, c.plan, pairs);
+    const test::ProbeRun run = test::run_orders_probe(*context, c.tables, c.plan, pairs);
     std::vector<glm::dvec3> want;
     double peak = 0.0, worst = 0.0;
     for (const auto& [a, b] : pairs) {
@@ -363,7 +363,7 @@ TEST(Orders, GpuMatchesTheDoubleTwinOverTheHemisphere) {
     const glm::dvec2 i(0.7 * unit(rng), 0.7 * unit(rng)), r(unit(rng), unit(rng));
     if (glm::dot(i, i) < 1.0 && glm::dot(r, r) < 1.0) pairs.emplace_back(direction(i.x, i.y), direction(r.x, r.y));
   }
-  const test::OrdersProbeRun run = test::run_orders_probe(*context, c.tables, c.plan, pairs);
+  const test::ProbeRun run = test::run_orders_probe(*context, c.tables, c.plan, pairs);
   std::vector<glm::dvec3> want;
   double peak = 0.0, worst = 0.0;
   int lit = 0;

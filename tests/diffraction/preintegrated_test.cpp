@@ -280,7 +280,7 @@ TEST(Preintegrated, GpuMatchesTheDoubleTwin) {
   std::vector<std::pair<glm::dvec3, glm::dvec3>> pairs;
   for (int q = 0; q < 4096; ++q) pairs.emplace_back(kLight, view(unit(rng), unit(rng)));
   auto context = test::make_validated_context();
-  const test::PreintegratedProbeRun run = test::run_preintegrated_probe(*context, pre, pairs);
+  const test::ProbeRun run = test::run_preintegrated_probe(*context, pre, pairs);
   double worst = 0.0;
   for (size_t q = 0; q < pairs.size(); ++q) {
     const glm::dvec3 want = to_xyz(evaluate_preintegrated(pre, kLight, pairs[q].second)), got = to_xyz(run.rgb[q]);
