@@ -4,10 +4,18 @@
 #include <array>
 
 #include "common/error.hpp"
+#include "gpu/contiguous_ids.hpp"
 #include "vk/buffer.hpp"
 #include "vk/kernel.hpp"
 
 namespace facet::gpu {
+
+// The slots of layout/eval_layout.glsl: every kernel's, then eval_diffraction's two more.
+static_assert(contiguous_ids(std::array<int, FACET_EVAL_BINDING_COUNT>{FACET_EVAL_BINDING_IN, FACET_EVAL_BINDING_OUT}));
+static_assert(contiguous_ids(
+    std::array<int, FACET_EVAL_DIFFRACTION_BINDING_COUNT - FACET_EVAL_BINDING_COUNT>{
+        FACET_EVAL_BINDING_DIFFRACTION_TABLE, FACET_EVAL_BINDING_DIFFRACTION_INFO},
+    FACET_EVAL_BINDING_COUNT));
 
 std::vector<EvalRecord> run_batch_eval(vk::Context& context, const char* name, std::span<const uint32_t> spirv,
                                        std::span<const EvalRecord> inputs, BatchTiming* timing) {
@@ -21,10 +29,12 @@ std::vector<EvalRecord> run_batch_eval(vk::Context& context, const char* name, s
   vk::Buffer out(context, bytes);
   vk::Kernel kernel(context, {.name = name,
                               .spirv = spirv,
-                              .buffer_count = 2,
+                              .buffer_count = FACET_EVAL_BINDING_COUNT,
                               .push_constant_bytes = sizeof(EvalRange),
                               .specialization = {}});
-  const std::array<const vk::Buffer*, 2> bindings = {&in, &out};
+  std::array<const vk::Buffer*, FACET_EVAL_BINDING_COUNT> bindings{};
+  bindings[FACET_EVAL_BINDING_IN] = &in;
+  bindings[FACET_EVAL_BINDING_OUT] = &out;
   const uint64_t per_dispatch =
       static_cast<uint64_t>(context.limits().maxComputeWorkGroupCount[0]) * FACET_EVAL_WORKGROUP;
   BatchTiming local;
