@@ -6,7 +6,7 @@
 namespace facet::kernels {
 
 // sigma of the spherical Gaussian (vMF, kappa = 2/alpha^2); absolute error below 1e-13 for
-// alpha in [1e-3, 1e3] and u in [-1, 1] (tests/cross_section/sg_exact_test.cpp).
+// alpha in [1e-3, 1e3] and u in [-1, 1] (tests/cross_section/sg_cross_section_test.cpp).
 double sg_cross_section_exact(double alpha, double u);
 
 // sigma(u) for ndf 0 Beckmann, 1 GGX, 2 Kagiwada-Kalaba, 3 spherical Gaussian (ids of
