@@ -60,10 +60,10 @@ void check_height_field_tracing(const Scene& scene, const RenderMethod& method) 
 }
 
 // The specialization constants of the pass by their names in the shaders: what the scene uses, how
-// the method shades it.
+// the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
                                              diffraction::DiffractionMethod diffraction) {
-  const std::array<vk::SpecConstant, FACET_RENDER_SPEC_COUNT> constants = {{
+  const auto constants = std::to_array<vk::SpecConstant>({
       {FACET_RENDER_SPEC_HAS_MICROFLAKE, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
       {FACET_RENDER_SPEC_HAS_TEXTURE, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
       {FACET_RENDER_SPEC_TEXTURE_METHOD, static_cast<uint32_t>(method.texture)},
@@ -73,7 +73,8 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_HAS_MICROSURFACE, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u},
       {FACET_RENDER_SPEC_HAS_SPHERES, scene.spheres.empty() ? 0u : 1u},
       {FACET_RENDER_SPEC_HAS_TRIANGLES, scene.meshes.empty() ? 0u : 1u},
-  }};
+  });
+  static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};
 }
 
