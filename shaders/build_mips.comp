@@ -9,7 +9,7 @@
 #include "layout/mip_layout.glsl"
 
 layout(local_size_x = FACET_MIP_WORKGROUP, local_size_y = FACET_MIP_WORKGROUP) in;
-layout(std430, binding = 0) buffer Texels { vec4 texels[]; };
+layout(std430, binding = FACET_MIP_BINDING_TEXELS) buffer Texels { vec4 texels[]; };
 layout(push_constant) uniform Push { GpuMipStep mip_step; };
 
 // Level-0 texels along one axis covered by child texel i (span level-0 texels each, `size` in all).

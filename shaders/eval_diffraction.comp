@@ -7,10 +7,10 @@
 #include "layout/diffraction_layout.glsl"
 
 layout(local_size_x = FACET_EVAL_WORKGROUP) in;
-layout(std430, binding = 0) readonly buffer In { EvalRecord records_in[]; };
-layout(std430, binding = 1) writeonly buffer Out { EvalRecord records_out[]; };
-layout(std430, binding = 2) readonly buffer Table { vec2 diffraction_coefficients[]; };
-layout(std430, binding = 3) readonly buffer Info { DiffractionTableInfo info; };
+layout(std430, binding = FACET_EVAL_BINDING_IN) readonly buffer In { EvalRecord records_in[]; };
+layout(std430, binding = FACET_EVAL_BINDING_OUT) writeonly buffer Out { EvalRecord records_out[]; };
+layout(std430, binding = FACET_EVAL_BINDING_DIFFRACTION_TABLE) readonly buffer Table { vec2 diffraction_coefficients[]; };
+layout(std430, binding = FACET_EVAL_BINDING_DIFFRACTION_INFO) readonly buffer Info { DiffractionTableInfo info; };
 layout(push_constant) uniform Push { EvalRange range; };
 
 #include "render/diffraction_taylor.glsl"

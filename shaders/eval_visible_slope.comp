@@ -7,8 +7,8 @@
 #include "lib/visible_slope.glsl"
 
 layout(local_size_x = FACET_EVAL_WORKGROUP) in;
-layout(std430, binding = 0) readonly buffer In { EvalRecord records_in[]; };
-layout(std430, binding = 1) writeonly buffer Out { EvalRecord records_out[]; };
+layout(std430, binding = FACET_EVAL_BINDING_IN) readonly buffer In { EvalRecord records_in[]; };
+layout(std430, binding = FACET_EVAL_BINDING_OUT) writeonly buffer Out { EvalRecord records_out[]; };
 layout(push_constant) uniform Push { EvalRange range; };
 
 void main() {

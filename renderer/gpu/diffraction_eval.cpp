@@ -27,7 +27,10 @@ std::vector<diffraction::DiffractionResult> evaluate_diffraction(vk::Context& co
   const std::array<DiffractionTableInfo, 1> info = {table_info(tables)};
   auto table = vk::Buffer::from(context, std::span<const glm::vec2>(coefficients));
   auto info_buffer = vk::Buffer::from(context, std::span<const DiffractionTableInfo>(info));
-  const std::array<const vk::Buffer*, 2> table_bindings = {&table, &info_buffer};
+  // Bound after the shared in/out slots, at eval_diffraction's named slots (layout/eval_layout.glsl).
+  std::array<const vk::Buffer*, FACET_EVAL_DIFFRACTION_BINDING_COUNT - FACET_EVAL_BINDING_COUNT> table_bindings{};
+  table_bindings[FACET_EVAL_BINDING_DIFFRACTION_TABLE - FACET_EVAL_BINDING_COUNT] = &table;
+  table_bindings[FACET_EVAL_BINDING_DIFFRACTION_INFO - FACET_EVAL_BINDING_COUNT] = &info_buffer;
   const std::vector<EvalRecord> raw =
       run_batch_eval(context, "eval_diffraction", eval_diffraction_spv, records, timing, table_bindings);
   for (const auto& r : raw) results.push_back({r.a.x, r.a.y});

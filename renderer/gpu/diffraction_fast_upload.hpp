@@ -1,6 +1,6 @@
 // The data of the fast diffraction paths (docs/diffraction_fast_paths.md, "Rendering") for the
-// direct pass: `preintegrated` tables over the scene's view domain (bindings 14, 15) and the
-// `orders` lattice with its observer table (binding 16), appended per material next to the
+// direct pass: `preintegrated` tables over the scene's view domain and the
+// `orders` lattice with its observer table, appended per material next to the
 // spectral data of gpu/diffraction_upload.cpp.
 #pragma once
 

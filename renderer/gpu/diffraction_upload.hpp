@@ -1,6 +1,6 @@
-// The diffraction materials of a scene in the direct pass's storage buffers (bindings 11-13 of
-// shaders/render/diffraction_shading.glsl): every material's spectral tables (float) and wavelength
-// samples, prepared for this render (diffraction/prepared_diffraction.hpp).
+// The diffraction materials of a scene in the direct pass's storage buffers (the slots
+// FACET_RENDER_BINDING_DIFFRACTION_* of shaders/layout/render_layout.glsl): every material's spectral
+// tables (float) and wavelength samples, prepared for this render (diffraction/prepared_diffraction.hpp).
 #pragma once
 
 #include <vector>
@@ -23,10 +23,6 @@ struct DiffractionBuffers {
   diffraction::DiffractionMethod method = diffraction::DiffractionMethod::Spectral;  // kDiffractionMethod
   int most_wavelengths = 0;  // the most wavelength samples / Taylor terms of any material (metadata)
   int most_taylor = 0;
-
-  std::vector<const vk::Buffer*> bindings() const {
-    return {&coefficients, &materials, &wavelengths, &preintegrated_words, &preintegrated_scales, &observer};
-  }
 };
 
 // Lavapipe stops every loop of a shader invocation, silently, once all its loops together have run

@@ -1,6 +1,7 @@
 #include "gpu/direct_pass.hpp"
 
 #include <algorithm>
+#include <array>
 #include <span>
 #include <string>
 #include <variant>
@@ -8,6 +9,7 @@
 
 #include "common/error.hpp"
 #include "gpu/microsurface_upload.hpp"
+#include "gpu/render_layout.hpp"
 #include "gpu/workgroup_order.hpp"
 #include "render_direct.spv.h"
 #include "render_direct_fields.spv.h"
@@ -15,7 +17,8 @@
 namespace facet::gpu {
 
 namespace {
-constexpr uint32_t kWorkgroup = 8;  // local_size_x/y of render_direct.comp
+// A tile's workgroups, numbered by 32-bit products in the shader's tile_position, stay within its bound.
+static_assert((kMaxTileSize / FACET_RENDER_WORKGROUP) * (kMaxTileSize / FACET_RENDER_WORKGROUP) <= kMaxTileBlocks);
 
 template <class M>
 bool uses(const Scene& scene) {
@@ -56,6 +59,24 @@ void check_height_field_tracing(const Scene& scene, const RenderMethod& method) 
                 std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) + " (use coarser texels, a smaller rectangle or --method mip)");
 }
 
+// The specialization constants of the pass by their names in the shaders: what the scene uses, how
+// the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
+std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
+                                             diffraction::DiffractionMethod diffraction) {
+  const auto constants = std::to_array<vk::SpecConstant>({
+      {FACET_RENDER_SPEC_HAS_MICROFLAKE, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
+      {FACET_RENDER_SPEC_HAS_TEXTURE, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
+      {FACET_RENDER_SPEC_TEXTURE_METHOD, static_cast<uint32_t>(method.texture)},
+      {FACET_RENDER_SPEC_HAS_DIFFRACTION, uses<DiffractionMaterial>(scene) ? 1u : 0u},
+      {FACET_RENDER_SPEC_DIFFRACTION_METHOD, static_cast<uint32_t>(diffraction)},
+      {FACET_RENDER_SPEC_HAS_MICROSURFACE, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u},
+      {FACET_RENDER_SPEC_HAS_SPHERES, scene.spheres.empty() ? 0u : 1u},
+      {FACET_RENDER_SPEC_HAS_TRIANGLES, scene.meshes.empty() ? 0u : 1u},
+  });
+  static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
+  return {constants.begin(), constants.end()};
+}
+
 }  // namespace
 
 int tile_count(int width, int height, int tile_size) {
@@ -72,23 +93,22 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       pixels_(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size),
       kernel_(context, {.name = "render_direct",
                         .spirv = direct_pass_program(scene, method),
-                        .buffer_count = static_cast<uint32_t>(bindings().size()),
+                        .buffer_count = FACET_RENDER_BINDING_COUNT,
                         .push_constant_bytes = sizeof(GpuTile),
-                        .specialization = {{0, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
-                                           {1, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
-                                           {2, static_cast<uint32_t>(method.texture)},
-                                           {4, uses<DiffractionMaterial>(scene) ? 1u : 0u},
-                                           {5, static_cast<uint32_t>(diffraction_.method)},
-                                           {6, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u},
-                                           {7, scene.spheres.empty() ? 0u : 1u},
-                                           {8, scene.meshes.empty() ? 0u : 1u}}}) {
+                        .specialization = specialization(scene, method, diffraction_.method)}) {
   check_height_field_tracing(scene, method);
 }
 
 std::vector<const vk::Buffer*> DirectPass::bindings() const {
-  std::vector<const vk::Buffer*> all = buffers_.bindings(pixels_);
-  for (const vk::Buffer* b : diffraction_.bindings()) all.push_back(b);
-  return all;
+  std::vector<const vk::Buffer*> slots = buffers_.bindings(pixels_);
+  slots.resize(FACET_RENDER_BINDING_COUNT);
+  slots[FACET_RENDER_BINDING_DIFFRACTION_COEFFICIENTS] = &diffraction_.coefficients;
+  slots[FACET_RENDER_BINDING_DIFFRACTION_MATERIALS] = &diffraction_.materials;
+  slots[FACET_RENDER_BINDING_DIFFRACTION_WAVELENGTHS] = &diffraction_.wavelengths;
+  slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS] = &diffraction_.preintegrated_words;
+  slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_SCALES] = &diffraction_.preintegrated_scales;
+  slots[FACET_RENDER_BINDING_DIFFRACTION_OBSERVER] = &diffraction_.observer;
+  return slots;
 }
 
 Image DirectPass::render(const Camera& camera, int width, int height, RenderStats* stats,
@@ -103,7 +123,8 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   for (int y0 = 0; y0 < height; y0 += tile_size_)
     for (int x0 = 0; x0 < width; x0 += tile_size_) {
       const int w = std::min(tile_size_, width - x0), h = std::min(tile_size_, height - y0);
-      glm::uvec3 groups((w + kWorkgroup - 1) / kWorkgroup, (h + kWorkgroup - 1) / kWorkgroup, 1);
+      glm::uvec3 groups((w + FACET_RENDER_WORKGROUP - 1) / FACET_RENDER_WORKGROUP,
+                        (h + FACET_RENDER_WORKGROUP - 1) / FACET_RENDER_WORKGROUP, 1);
       const uint32_t blocks = groups.x * groups.y;
       const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
       const int k = samples_per_axis_, strata = k * k;

@@ -21,7 +21,7 @@ struct RenderStats {
 };
 
 constexpr int kDefaultTileSize = 256;
-constexpr int kMaxTileSize = 2040;  // (2040 / 8)^2 workgroups: within gpu::kMaxTileBlocks
+constexpr int kMaxTileSize = 2040;  // (2040 / 8)^2 workgroups: within gpu::kMaxTileBlocks (direct_pass.cpp checks)
 
 // How many tiles (= submissions) an image of width x height is split into.
 int tile_count(int width, int height, int tile_size = kDefaultTileSize);

@@ -1,7 +1,10 @@
 #include "gpu/mip_builder.hpp"
 
+#include <array>
+
 #include "build_mips.spv.h"
 #include "common/error.hpp"
+#include "gpu/contiguous_ids.hpp"
 
 namespace facet::gpu {
 
@@ -9,6 +12,7 @@ namespace {
 using glm::uvec3;
 #include "layout/mip_layout.glsl"
 static_assert(sizeof(GpuMipStep) == 48);
+static_assert(contiguous_ids(std::array<int, FACET_MIP_BINDING_COUNT>{FACET_MIP_BINDING_TEXELS}));
 }  // namespace
 
 std::vector<glm::uvec2> mip_chain_sizes(int width, int height) {
@@ -21,13 +25,14 @@ std::vector<glm::uvec2> mip_chain_sizes(int width, int height) {
 MipBuilder::MipBuilder(vk::Context& context)
     : kernel_(context, {.name = "build_mips",
                         .spirv = build_mips_spv,
-                        .buffer_count = 1,
+                        .buffer_count = FACET_MIP_BINDING_COUNT,
                         .push_constant_bytes = sizeof(GpuMipStep),
                         .image_count = 0,
                         .specialization = {}}) {}
 
 double MipBuilder::build(const vk::Buffer& texels, std::span<const GpuTextureLevel> chain) {
-  const vk::Buffer* bindings[] = {&texels};
+  std::array<const vk::Buffer*, FACET_MIP_BINDING_COUNT> bindings{};
+  bindings[FACET_MIP_BINDING_TEXELS] = &texels;
   double gpu_ms = 0.0;
   const uvec4 base = chain.empty() ? uvec4(0) : uvec4(chain[0].info.y, chain[0].info.z, 0, 0);
   for (size_t l = 0; l + 1 < chain.size(); ++l) {

@@ -10,6 +10,7 @@
 #include "common/error.hpp"
 #include "scene/bvh.hpp"
 #include "gpu/microsurface_upload.hpp"
+#include "gpu/render_layout.hpp"
 #include "gpu/texture_upload.hpp"
 #include "scene/camera_frame.hpp"
 #include "scene/plane_frame.hpp"
@@ -47,8 +48,19 @@ std::vector<GpuTriangle> flatten_triangles(const Scene& scene, const Bvh& bvh) {
 }  // namespace
 
 std::vector<const vk::Buffer*> SceneBuffers::bindings(const vk::Buffer& pixels) const {
-  return {&globals,   &planes, &spheres,        &nodes, &triangles,       &materials,
-          &pixels,    &texture_levels, &texels, &colormaps, &colormap_points};
+  std::vector<const vk::Buffer*> slots(FACET_RENDER_SCENE_BINDING_COUNT);
+  slots[FACET_RENDER_BINDING_GLOBALS] = &globals;
+  slots[FACET_RENDER_BINDING_PLANES] = &planes;
+  slots[FACET_RENDER_BINDING_SPHERES] = &spheres;
+  slots[FACET_RENDER_BINDING_BVH_NODES] = &nodes;
+  slots[FACET_RENDER_BINDING_TRIANGLES] = &triangles;
+  slots[FACET_RENDER_BINDING_MATERIALS] = &materials;
+  slots[FACET_RENDER_BINDING_PIXELS] = &pixels;
+  slots[FACET_RENDER_BINDING_TEXTURE_LEVELS] = &texture_levels;
+  slots[FACET_RENDER_BINDING_TEXELS] = &texels;
+  slots[FACET_RENDER_BINDING_COLORMAPS] = &colormaps;
+  slots[FACET_RENDER_BINDING_COLORMAP_POINTS] = &colormap_points;
+  return slots;
 }
 
 void SceneBuffers::set_camera(const Scene& scene, const Camera& camera, int width, int height) {

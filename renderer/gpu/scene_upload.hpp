@@ -23,7 +23,8 @@ struct SceneBuffers {
   vk::Buffer colormap_points;
   uvec4 counts;  // planes, spheres, BVH nodes, triangles: GpuGlobals::counts
 
-  // The buffers in binding order (shaders/render/scene_bindings.glsl), `pixels` at binding 6.
+  // Slots 0..FACET_RENDER_SCENE_BINDING_COUNT-1 of the direct pass, each buffer at its named slot
+  // (shaders/layout/render_layout.glsl), `pixels` at FACET_RENDER_BINDING_PIXELS.
   std::vector<const vk::Buffer*> bindings(const vk::Buffer& pixels) const;
   // Writes the camera block of the globals for `camera` and an image of width x height (the
   // scene's own camera and resolution may be overridden per frame).

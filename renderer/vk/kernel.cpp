@@ -82,6 +82,8 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
     if (groups[axis] > limits.maxComputeWorkGroupCount[axis])
       throw Error("kernel " + name_ + ": dispatch of " + std::to_string(groups[axis]) +
                   " workgroups exceeds the device limit");
+  for (size_t i = 0; i < buffers.size(); ++i)
+    if (!buffers[i]) throw Error("internal: kernel " + name_ + ": no buffer at binding " + std::to_string(i));
   for (const Buffer* buffer : buffers)
     if (buffer->size() > limits.maxStorageBufferRange)
       throw Error("kernel " + name_ + ": a buffer of " + std::to_string(buffer->size()) +

@@ -13,8 +13,8 @@ struct DiffractionTableInfo {
 // tables start at diffraction_coefficients[offsets.x], its wavelength samples (lambda, XYZ weight)
 // are diffraction_wavelengths[offsets.y .. offsets.y + offsets.z).
 // The fast paths (docs/diffraction_fast_paths.md, "Rendering") read the rest: `preintegrated` the
-// grid of its tables in diffraction_preintegrated_words / _scales (bindings 14, 15), `orders` the
-// grating's lattice of orders and its 1 nm observer table in diffraction_observer (binding 16).
+// grid of its tables in diffraction_preintegrated_words / _scales, `orders` the
+// grating's lattice of orders and its 1 nm observer table in diffraction_observer.
 struct GpuDiffractionMaterial {
   DiffractionTableInfo table;
   uvec4 offsets;  // first coefficient, first wavelength sample, wavelength count, -

@@ -16,4 +16,13 @@ struct EvalRange {
 
 #define FACET_EVAL_WORKGROUP 64
 
+// Storage-buffer slots of every eval kernel (gpu/batch_eval.cpp binds them by these names);
+// eval_diffraction.comp reads its spectral tables at the next two (diffraction/diffraction_gpu.cpp).
+#define FACET_EVAL_BINDING_IN 0
+#define FACET_EVAL_BINDING_OUT 1
+#define FACET_EVAL_BINDING_COUNT 2
+#define FACET_EVAL_BINDING_DIFFRACTION_TABLE 2
+#define FACET_EVAL_BINDING_DIFFRACTION_INFO 3
+#define FACET_EVAL_DIFFRACTION_BINDING_COUNT 4
+
 #endif

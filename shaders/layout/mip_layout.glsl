@@ -1,4 +1,5 @@
-// Push constants of shaders/build_mips.comp, shared by GLSL and C++ (renderer/gpu/mip_builder.hpp).
+// Push constants, binding slots and workgroup size of shaders/build_mips.comp, shared by GLSL and C++
+// (renderer/gpu/mip_builder.cpp).
 // uvec4-only, so std430 equals the C++ layout.
 #ifndef FACET_MIP_LAYOUT_GLSL
 #define FACET_MIP_LAYOUT_GLSL
@@ -11,5 +12,7 @@ struct GpuMipStep {
 };
 
 #define FACET_MIP_WORKGROUP 8
+#define FACET_MIP_BINDING_TEXELS 0  // the texel buffer, its levels filtered in place
+#define FACET_MIP_BINDING_COUNT 1
 
 #endif

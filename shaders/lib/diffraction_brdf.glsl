@@ -30,7 +30,7 @@ inline DiffractionGeometry diffraction_geometry(real3 wi, real3 wr, real lambda_
   real k = real(2) * FACET_PI / lambda_nm;
   real3 uvw = -wi - wr;
   // Below 1/(k sigma) a coherence area of size sigma cannot tell a direction from grazing: the
-  // floor keeps B.12's 1/w^2 and 1/(cos_i cos_r) finite (ERRATA 13) without changing resolved values.
+  // floor keeps B.12's 1/w^2 and 1/(cos_i cos_r) finite (docs/errata.md#grazing-singularity) without changing resolved values.
   real resolution = real(1) / (k * sigma_nm);
   real w = min(uvw.z, real(0));
   return DiffractionGeometry(k, k * real2(uvw.x, uvw.y), w, min(w, -resolution), real(0.5) * dot(uvw, uvw),

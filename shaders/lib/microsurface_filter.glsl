@@ -1,5 +1,6 @@
-// The per-pixel model of a colour-mapped Gaussian microsurface (Heitz et al. 2013/2014, seeds/000 and
-// seeds/001): the footprint's heights N(h_mean, h_sigma^2) and slopes N(s_mean, Sigma) from its moments,
+// The per-pixel model of a colour-mapped Gaussian microsurface (Heitz et al. 2013, Filtering Color
+// Mapped Textures and Surfaces; Heitz et al. 2014, Filtering Non-Linear Transfer Functions on Surfaces):
+// the footprint's heights N(h_mean, h_sigma^2) and slopes N(s_mean, Sigma) from its moments,
 // the visible slopes D_s and Smith's Lambda for the view, the visible heights (CDF C^(1 + Lambda_v)),
 // the light's Lambda_l, and the quadrature nodes over which a shader integrates its colour maps, plus
 // the LEAN-convolved Beckmann lobe. Derivation, accuracy and tests: docs/microsurface_filtering.md.
@@ -27,7 +28,7 @@ struct MicrosurfaceStatistics {
 };
 
 // From the footprint's moments m0 = (E[h], E[h^2], E[s_x], E[s_y]) and m1 = (E[s_x^2], E[s_y^2],
-// E[s_x s_y], -): the Gaussians of heights and slopes, eq. (1) of seeds/000 (LEAN mapping).
+// E[s_x s_y], -): the Gaussians of heights and slopes, eq. (1) of Heitz et al. 2014 (LEAN mapping).
 inline MicrosurfaceStatistics microsurface_statistics(real4 m0, real4 m1) {
   real h_var = max(m0.y - m0.x * m0.x, real(0));
   real var_x = max(m1.x - m0.z * m0.z, real(0)) + MS_SLOPE_VARIANCE_MIN;
@@ -45,11 +46,11 @@ inline real2 microsurface_angles(real3 w) {
   return real2(atan(r, w.z), r > real(0) ? atan(w.y, w.x) : real(0));
 }
 
-// Unit facet normal of slope s = grad z: n ~ (-s_x, -s_y, 1) (seeds/000 eq. 1's convention).
+// Unit facet normal of slope s = grad z: n ~ (-s_x, -s_y, 1) (Heitz et al. 2014 eq. 1's convention).
 inline real3 microsurface_normal(real2 s) { return normalize(real3(-s.x, -s.y, real(1))); }
 
 struct MicrosurfaceVisibility {
-  VisibleSlope ds;  // the visible slopes for the view, eqs. (16), (42)-(46) of seeds/000
+  VisibleSlope ds;  // the visible slopes for the view, eqs. (16), (42)-(46) of Heitz et al. 2014
   real lambda_v;    // Smith's Lambda of the view (docs/masking.md)
   real lambda_l;    // ... of the light
   real lit;         // P(lit | visible) = E_vis[C(h)^Lambda_l] = (1 + Lambda_v)/(1 + Lambda_v + Lambda_l)

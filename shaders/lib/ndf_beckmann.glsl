@@ -2,7 +2,7 @@
 // per steradian and normalised by integral D(m) m_z dm = 1 (d'Eon eqs. 19-22; docs/cross_sections.md).
 // Every statistic depends on the horizon variable t = sqrt2 w_z / alpha_w, alpha_w^2 = ax^2 wx^2 + ay^2 wy^2,
 // and is taken from the partial moments m_k(t) of normal_partial_moments.glsl, which stay accurate
-// however far below the horizon w looks (ERRATA 4).
+// however far below the horizon w looks (docs/errata.md#visible-slope-cancellation).
 #ifndef FACET_NDF_BECKMANN_GLSL
 #define FACET_NDF_BECKMANN_GLSL
 #include "lib/prelude.glsl"
@@ -52,7 +52,7 @@ inline real ndf_beckmann_lambda(real3 w, real2 alpha) {
 
 // Visible slopes. In the stretched view frame the slope along the view, in units of its standard
 // deviation, is s = -x, and x has density (x + t) phi(x) / m_1(t) on x > -t (z = x + t is the variable
-// of ERRATA 4). Its upper tail T(x) = phi(x) + t Q(x) is inverted for T(x) = xi T(-t) by safeguarded
+// of docs/errata.md#visible-slope-cancellation). Its upper tail T(x) = phi(x) + t Q(x) is inverted for T(x) = xi T(-t) by safeguarded
 // Newton on log T, with
 //   log T = log phi(x) + log((k + x + t)/(x + k)) for x >= 0, k = m_1(-x)/m_0(-x)
 //   (so that Q/phi = 1/(x + k) and 1 - x Q/phi = k/(x + k), both without cancellation),

@@ -29,7 +29,8 @@ inline real ndf_kk_mean_z(real b_in) {
   return (ndf_log1p_minus_x(b) - ndf_log1p_minus_x(-b)) / (b * L);
 }
 
-// sigma(u), eq. (27) divided by 2 pi (ERRATA 6), rearranged with R = sqrt(1 - b^2 (1 - u^2)):
+// sigma(u), d'Eon's eq. (27) divided by 2 pi (docs/errata.md#cross-section-2pi), rearranged with
+// R = sqrt(1 - b^2 (1 - u^2)):
 //   L sigma = b (1 - u^2)/(1 + R) + u [ln((1+b)(1-u)/(R-u)) / b - 1].
 // For u >= 0, (1-u)/(R-u) = (R+u)/((1+u)(1-b^2)) and the bracket is
 //   [log1p(-b^2 (1-u)/(1+R)) - (log1p(-b) + b)] / b;

@@ -1,5 +1,6 @@
 // Spherical Gaussian (von Mises-Fisher) normal distribution with roughness alpha, kappa = 2/alpha^2
-// (d'Eon eq. 28 as corrected by ERRATA 8), per steradian, normalised by integral D(m) dm = 1.
+// (d'Eon, The anisotropic cross-section for the spherical Gaussian medium, eq. 28 as corrected in
+// docs/errata.md#spherical-gaussian-overflow), per steradian, normalised by integral D(m) dm = 1.
 // Its cross-section has no closed form: ndf_sg_sigma is the fast evaluation (measured worst absolute
 // error in docs/cross_sections.md); the exact one is CPU-only (renderer/kernels/cross_section_exact).
 #ifndef FACET_NDF_SPHERICAL_GAUSSIAN_GLSL
@@ -15,7 +16,7 @@
 
 inline real ndf_sg_kappa(real alpha) { return real(2) / (alpha * alpha); }
 
-// D(m) = kappa exp(kappa (m_z - 1)) / (2 pi (1 - exp(-2 kappa))): never overflows (ERRATA 8).
+// D(m) = kappa exp(kappa (m_z - 1)) / (2 pi (1 - exp(-2 kappa))): never overflows (docs/errata.md#spherical-gaussian-overflow).
 inline real ndf_sg_D(real3 m, real alpha) {
   real kappa = ndf_sg_kappa(alpha);
   return real(0.5) * FACET_INV_PI * kappa * exp(kappa * (m.z - real(1))) / -sf_expm1(real(-2) * kappa);

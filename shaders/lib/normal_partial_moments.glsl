@@ -1,6 +1,6 @@
 // Partial moments of a unit normal of mean t above zero, m_k(t) = int_0^inf z^k phi(z - t) dz.
 // In the view frame the visible slope law of z = (cot theta - s_o)/sigma_o is z phi(z - t)/m_1(t) on
-// z >= 0 (ERRATA item 4), so D_s needs only the ratios below; derivation in docs/visible_slope.md.
+// z >= 0 (docs/errata.md#visible-slope-cancellation), so D_s needs only the ratios below; derivation in docs/visible_slope.md.
 #ifndef FACET_NORMAL_PARTIAL_MOMENTS_GLSL
 #define FACET_NORMAL_PARTIAL_MOMENTS_GLSL
 #include "lib/prelude.glsl"

@@ -1,5 +1,6 @@
 // A Gaussian slope law N(s_mean, Sigma) seen from omega_o(theta, phi), expressed in the view frame
-// (o, perp) of 000_45241987dd37cfd4.txt eqs. (2)-(10), plus the horizon variable
+// (o, perp) of Heitz et al. 2014 (Filtering Non-Linear Transfer Functions on Surfaces, supplemental)
+// eqs. (2)-(10), plus the horizon variable
 // t = (cot theta - s_mean_o)/sigma_o that every visibility statistic depends on.
 #ifndef FACET_SLOPE_VIEW_FRAME_GLSL
 #define FACET_SLOPE_VIEW_FRAME_GLSL
@@ -38,7 +39,7 @@ inline SlopeViewFrame slope_view_frame(real2 mean, real3 cov, real theta, real p
   real cov_o_perp = (cov.y - cov.x) * c * s + cov.z * (c * c - s * s);
   real sigma_o = sqrt(var_o);
   real w0 = cos_theta - mean_o * sin_theta;  // W at the mean slope, eq. (17)
-  // At normal incidence t = +inf (D_s = p_s, ERRATA item 3); t is capped at 1e15, where every
+  // At normal incidence t = +inf (D_s = p_s, docs/errata.md#visible-slope-normal-incidence); t is capped at 1e15, where every
   // statistic equals its limit to 1e-15, by keeping a >= 1e-15 w0.
   real a = max(sin_theta * sigma_o, w0 * real(1e-15));
   return SlopeViewFrame(cos_theta, sin_theta, c, s, mean_o, mean_perp, var_o, cov_o_perp, det, sigma_o, a,

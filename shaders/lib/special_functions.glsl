@@ -1,5 +1,5 @@
 // Special functions for the Gaussian microsurface statistics (GLSL has no erf, erfc, expm1, log1p).
-// Every function keeps its *relative* accuracy in the far tails (ERRATA item 5); measured accuracy and
+// Every function keeps its *relative* accuracy in the far tails (docs/errata.md#tail-accurate-erf); measured accuracy and
 // derivations: docs/visible_slope.md, tests: tests/kernels/special_functions_test.cpp.
 #ifndef FACET_SPECIAL_FUNCTIONS_GLSL
 #define FACET_SPECIAL_FUNCTIONS_GLSL

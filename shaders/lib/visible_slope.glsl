@@ -1,7 +1,8 @@
 // The visible slope distribution D_s of a Gaussian slope law N(s_mean, Sigma) seen from
-// omega_o(theta, phi) (000_45241987dd37cfd4.txt eqs. 12-46): its normalisation N (eq. 16) and the mean
-// and covariance of its Gaussian approximation, in the surface frame. Instead of the closed form
-// (59)-(69), which cancels catastrophically beyond the horizon (ERRATA items 1-4), D_s is factored in
+// omega_o(theta, phi) (Heitz et al. 2014, Filtering Non-Linear Transfer Functions on Surfaces,
+// supplemental, eqs. 12-46): its normalisation N (eq. 16) and the mean and covariance of its Gaussian
+// approximation, in the surface frame. Instead of the closed form (59)-(69), which cancels
+// catastrophically beyond the horizon (docs/errata.md, the visible-slope-* entries), D_s is factored in
 // the view frame: z = (cot theta - s_o)/sigma_o has density z phi(z - t)/m_1(t) on z >= 0, and s_perp
 // given s_o keeps the Gaussian conditional law of p_s. Derivation: docs/visible_slope.md.
 #ifndef FACET_VISIBLE_SLOPE_GLSL

@@ -1,10 +1,11 @@
 // The diffracted light of "diffraction" materials in the direct pass (docs/diffraction.md,
-// "Rendering") and docs/diffraction_fast_paths.md: bindings 11-16, compiled in only when kHasDiffraction (constant_id 4) is set.
+// "Rendering") and docs/diffraction_fast_paths.md: the FACET_RENDER_BINDING_DIFFRACTION_* slots of
+// layout/render_layout.glsl, compiled in only when kHasDiffraction is set.
 // The per-pixel geometry (the grating frame, wi and wr in it) is computed once; then one switch on
-// kDiffractionMethod (constant_id 5) picks how the spectrum becomes a colour:
+// kDiffractionMethod picks how the spectrum becomes a colour:
 //   0 spectral   sum over the material's wavelength samples of the Taylor BRDF times their XYZ weights
-//   1 preintegrated  the material's wavelength-integrated tables (bindings 14, 15), a polynomial in w
-//   2 orders     the Taylor BRDF at the wavelengths near the grating's orders (observer: binding 16);
+//   1 preintegrated  the material's wavelength-integrated tables (diffraction_preintegrated_*), a polynomial in w
+//   2 orders     the Taylor BRDF at the wavelengths near the grating's orders (diffraction_observer);
 //                spectral where the host found restricting not worth it (not periodic, or orders unresolved: F.10, F.11)
 // The includer declares kHasDiffraction and kDiffractionMethod before including this file.
 #ifndef FACET_RENDER_DIFFRACTION_SHADING_GLSL
@@ -13,12 +14,12 @@
 #include "lib/diffraction_frame.glsl"
 #include "render/scene_bindings.glsl"
 
-layout(std430, binding = 11) readonly buffer DiffractionCoefficients { vec2 diffraction_coefficients[]; };
-layout(std430, binding = 12) readonly buffer DiffractionMaterials { GpuDiffractionMaterial diffraction_materials[]; };
-layout(std430, binding = 13) readonly buffer DiffractionWavelengths { vec4 diffraction_wavelengths[]; };  // lambda, XYZ
-layout(std430, binding = 14) readonly buffer DiffractionPreintegratedWords { uint diffraction_preintegrated_words[]; };
-layout(std430, binding = 15) readonly buffer DiffractionPreintegratedScales { float diffraction_preintegrated_scales[]; };
-layout(std430, binding = 16) readonly buffer DiffractionObserver { vec4 diffraction_observer[]; };  // XYZ per nm
+layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_COEFFICIENTS) readonly buffer DiffractionCoefficients { vec2 diffraction_coefficients[]; };
+layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_MATERIALS) readonly buffer DiffractionMaterials { GpuDiffractionMaterial diffraction_materials[]; };
+layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_WAVELENGTHS) readonly buffer DiffractionWavelengths { vec4 diffraction_wavelengths[]; };  // lambda, XYZ
+layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS) readonly buffer DiffractionPreintegratedWords { uint diffraction_preintegrated_words[]; };
+layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_SCALES) readonly buffer DiffractionPreintegratedScales { float diffraction_preintegrated_scales[]; };
+layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_OBSERVER) readonly buffer DiffractionObserver { vec4 diffraction_observer[]; };  // XYZ per nm
 
 #include "render/diffraction_orders.glsl"
 #include "render/diffraction_preintegrated.glsl"

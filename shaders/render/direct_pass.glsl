@@ -1,19 +1,20 @@
 // Primary rays through the scene's planes, spheres and BVH of triangles; direct lighting from the
 // directional light (with a shadow ray) plus the ambient fill, for every macro-surface material.
-// Specialization constants compile in only what a scene and a method use:
-//   0 kHasMicroflake   microflake half-spaces (lib/microflake_shading.glsl)
-//   1 kHasTexture      colour-mapped textures
-//   2 kTextureMethod   0 naive (finest level, colour map per sample), 1 mip (MIP-mapped texture, then
+// Specialization constants (ids named FACET_RENDER_SPEC_* in layout/render_layout.glsl, with the
+// binding slots and the workgroup size) compile in only what a scene and a method use:
+//   kHasMicroflake     microflake half-spaces (lib/microflake_shading.glsl)
+//   kHasTexture        colour-mapped textures
+//   kTextureMethod     0 naive (finest level, colour map per sample), 1 mip (MIP-mapped texture, then
 //                      colour map), 2 colormip (MIP-mapped colour-mapped texture), 3 filtered (the
 //                      footprint's Gaussian N(mu, sigma^2) integrated against the colour map exactly),
 //                      4 filtered:table (the same Gaussian looked up in the map's prefiltered table)
-//   3 (unused: ss:K's K is pushed in tile.stratum.w, one stratum per dispatch, so no invocation loops
-//      over samples: lavapipe ends an invocation's loops after 65535 iterations in all, docs/diffraction.md)
-//   4 kHasDiffraction  diffraction gratings (render/diffraction_shading.glsl)
-//   5 kDiffractionMethod  how a grating's spectrum becomes a colour: 0 spectral (wavelength samples)
-//   6 kHasMicrosurface colour-mapped microsurfaces on finite planes, by kTextureMethod
-//                      (naive and ss:K trace their height fields: render/heightfield_trace.glsl)
-//   7 kHasSpheres, 8 kHasTriangles  the scene has spheres / meshes (render/trace.glsl): lavapipe runs
+//   kHasDiffraction    diffraction gratings (render/diffraction_shading.glsl)
+//   kDiffractionMethod how a grating's spectrum becomes a colour: 0 spectral (wavelength samples),
+//                      1 preintegrated, 2 orders (render/diffraction_shading.glsl)
+//   kHasMicrosurface   colour-mapped microsurfaces on finite planes, by kTextureMethod (naive,
+//                      filtered and filtered:table, at any ss:K, trace their height fields with
+//                      render_direct_fields.comp: render/heightfield_trace.glsl)
+//   kHasSpheres, kHasTriangles  the scene has spheres / meshes (render/trace.glsl): lavapipe runs
 //                      the body of a loop over no primitives once, masked, so absent kinds are compiled out
 // Tracing, the scene's buffers and each material family's shading live in render/*.glsl.
 // Two programs include this file: render_direct.comp, and render_direct_fields.comp, which defines
@@ -23,15 +24,17 @@
 #ifndef FACET_RENDER_DIRECT_PASS_GLSL
 #define FACET_RENDER_DIRECT_PASS_GLSL
 
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(constant_id = 0) const bool kHasMicroflake = false;
-layout(constant_id = 1) const bool kHasTexture = false;
-layout(constant_id = 2) const uint kTextureMethod = 0u;
-layout(constant_id = 4) const bool kHasDiffraction = false;
-layout(constant_id = 5) const uint kDiffractionMethod = 0u;
-layout(constant_id = 6) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
-layout(constant_id = 7) const bool kHasSpheres = true;
-layout(constant_id = 8) const bool kHasTriangles = true;
+#include "layout/render_layout.glsl"
+
+layout(local_size_x = FACET_RENDER_WORKGROUP, local_size_y = FACET_RENDER_WORKGROUP) in;
+layout(constant_id = FACET_RENDER_SPEC_HAS_MICROFLAKE) const bool kHasMicroflake = false;
+layout(constant_id = FACET_RENDER_SPEC_HAS_TEXTURE) const bool kHasTexture = false;
+layout(constant_id = FACET_RENDER_SPEC_TEXTURE_METHOD) const uint kTextureMethod = 0u;
+layout(constant_id = FACET_RENDER_SPEC_HAS_DIFFRACTION) const bool kHasDiffraction = false;
+layout(constant_id = FACET_RENDER_SPEC_DIFFRACTION_METHOD) const uint kDiffractionMethod = 0u;
+layout(constant_id = FACET_RENDER_SPEC_HAS_MICROSURFACE) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
+layout(constant_id = FACET_RENDER_SPEC_HAS_SPHERES) const bool kHasSpheres = true;
+layout(constant_id = FACET_RENDER_SPEC_HAS_TRIANGLES) const bool kHasTriangles = true;
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS

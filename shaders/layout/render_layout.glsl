@@ -1,0 +1,46 @@
+// The binding contract of the direct pass (render_direct.comp, render_direct_fields.comp), by name:
+// its storage-buffer slots, specialization constant ids and workgroup size. Plain #defines, so the
+// same lines serve GLSL and C++ (renderer/gpu/render_layout.hpp includes this file and checks that
+// the slots and the ids each run 0..count-1 without gaps or repeats; vk::Kernel binds slots 0..B-1).
+#ifndef FACET_RENDER_LAYOUT_GLSL
+#define FACET_RENDER_LAYOUT_GLSL
+
+// The scene's buffers (render/scene_bindings.glsl; C++: SceneBuffers, gpu/scene_upload.hpp).
+#define FACET_RENDER_BINDING_GLOBALS 0
+#define FACET_RENDER_BINDING_PLANES 1
+#define FACET_RENDER_BINDING_SPHERES 2
+#define FACET_RENDER_BINDING_BVH_NODES 3
+#define FACET_RENDER_BINDING_TRIANGLES 4
+#define FACET_RENDER_BINDING_MATERIALS 5
+#define FACET_RENDER_BINDING_PIXELS 6  // the tile's pixels, owned by the pass (gpu/direct_pass.hpp)
+#define FACET_RENDER_BINDING_TEXTURE_LEVELS 7
+#define FACET_RENDER_BINDING_TEXELS 8
+#define FACET_RENDER_BINDING_COLORMAPS 9
+#define FACET_RENDER_BINDING_COLORMAP_POINTS 10
+#define FACET_RENDER_SCENE_BINDING_COUNT 11
+
+// The diffraction materials' buffers (render/diffraction_shading.glsl; C++: DiffractionBuffers,
+// gpu/diffraction_upload.hpp).
+#define FACET_RENDER_BINDING_DIFFRACTION_COEFFICIENTS 11
+#define FACET_RENDER_BINDING_DIFFRACTION_MATERIALS 12
+#define FACET_RENDER_BINDING_DIFFRACTION_WAVELENGTHS 13
+#define FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS 14
+#define FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_SCALES 15
+#define FACET_RENDER_BINDING_DIFFRACTION_OBSERVER 16
+#define FACET_RENDER_BINDING_COUNT 17
+
+// Specialization constants (what each selects: render/direct_pass.glsl).
+#define FACET_RENDER_SPEC_HAS_MICROFLAKE 0
+#define FACET_RENDER_SPEC_HAS_TEXTURE 1
+#define FACET_RENDER_SPEC_TEXTURE_METHOD 2
+#define FACET_RENDER_SPEC_HAS_DIFFRACTION 3
+#define FACET_RENDER_SPEC_DIFFRACTION_METHOD 4
+#define FACET_RENDER_SPEC_HAS_MICROSURFACE 5
+#define FACET_RENDER_SPEC_HAS_SPHERES 6
+#define FACET_RENDER_SPEC_HAS_TRIANGLES 7
+#define FACET_RENDER_SPEC_COUNT 8
+
+// Workgroups are FACET_RENDER_WORKGROUP x FACET_RENDER_WORKGROUP pixels of a tile.
+#define FACET_RENDER_WORKGROUP 8
+
+#endif
