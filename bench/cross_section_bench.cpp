@@ -3,7 +3,7 @@
 // benchmark cycles through 4096 (alpha, u) pairs spread log-uniformly over alpha in [1e-3, 1e3] and
 // uniformly over u in [-1, 1]; the counter max_err is the worst of |sigma - exact| / max(1, exact) on
 // that set (Beckmann and GGX reach sigma = alpha/2 = 500; 0 for the exact evaluations themselves,
-// whose accuracy tests/cross_section establishes).
+// whose accuracy tests/kernels establishes).
 #include <benchmark/benchmark.h>
 
 #include <cmath>

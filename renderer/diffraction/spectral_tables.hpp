@@ -22,7 +22,7 @@ struct TableRange {
 };
 
 // Smallest N with x^N / N! <= tolerance: the Lagrange bound of sum_{n<N} (ix)^n/n! against e^{ix},
-// whose derivatives all have modulus 1 (ERRATA 11). At least 1.
+// whose derivatives all have modulus 1 (docs/errata.md#taylor-bound). At least 1.
 int taylor_term_count(double x_max, double tolerance);
 
 // Smallest r such that every DFT bin more than r bins from the nearest one has window weight

@@ -164,7 +164,7 @@ TEST(DiffractionBrdf, WindowedTransformMatchesBruteForceLatticeSum) {
 }
 
 // The Taylor sum against the exact transform for growing k w h_s (mean-free heights), in double.
-// |S_taylor - S_exact| <= W x^N / N! (<= W tolerance): the remainder bound of ERRATA 11.
+// |S_taylor - S_exact| <= W x^N / N! (<= W tolerance): the remainder bound of docs/errata.md#taylor-bound.
 TEST(DiffractionBrdf, TaylorSumMatchesExactTransformForGrowingHeights) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> uni(-0.7, 0.7);
@@ -224,7 +224,7 @@ TEST(DiffractionBrdf, IsReciprocal) {
   }
 }
 
-// ERRATA 13: B.12 is singular as w -> 0 (both directions grazing). Over a grid of the whole
+// docs/errata.md#grazing-singularity: B.12 is singular as w -> 0 (both directions grazing). Over a grid of the whole
 // hemisphere pair domain including z = 0 exactly, BRDF and P2 are finite and >= 0, and a direction
 // at z = 1e-12 gives the same value as z = 0 (the floor at 1/(k sigma) makes the limit continuous).
 TEST(DiffractionBrdf, FiniteOnTheWholeDomainIncludingGrazing) {

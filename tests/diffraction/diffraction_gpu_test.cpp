@@ -34,7 +34,7 @@ std::vector<DiffractionQuery> random_queries(int count, unsigned seed) {
 
 // Float error model of one evaluation, in units of |S| (the windowed transform, |S| <= W):
 //  - the Taylor sum adds terms up to x^n/n! |H_n| in size: rounding ~ eps sum_n x^n/n! <= eps e^|x|
-//    (ERRATA 12), and the float tables add the same relative rounding to every term;
+//    (docs/errata.md#float-taylor-cancellation), and the float tables add the same relative rounding to every term;
 //  - k u is rounded (relative eps), which moves the window argument d = sigma |k u - alpha_j| by
 //    sigma k |u| eps and the weight exp(-d^2/2) by at most max_d(d e^{-d^2/2}) sigma k |u| eps < sigma k |u| eps.
 // Both are multiplied by 2 for the few roundings per step and by W for the bins.
@@ -73,7 +73,7 @@ TEST(DiffractionGpu, FloatShaderMatchesDoubleKernel) {
   }
 }
 
-// ERRATA 12: with k w h_s up to 4 pi, float Taylor sums cancel terms ~ x^n / n! up to ~2e4. The
+// docs/errata.md#float-taylor-cancellation: with k w h_s up to 4 pi, float Taylor sums cancel terms ~ x^n / n! up to ~2e4. The
 // GPU must stay within the float bound above against the exact transform (plus the tables'
 // Lagrange tolerance), and the double CPU twin within the tolerance alone.
 TEST(DiffractionGpu, TallGratingUpToFourPiInFloat) {

@@ -52,7 +52,7 @@ TEST(SpectralTables, MatchTheDirectDftSum) {
   }
 }
 
-// N is the first count whose Lagrange remainder x^N / N! is within the tolerance (ERRATA 11): the
+// N is the first count whose Lagrange remainder x^N / N! is within the tolerance (docs/errata.md#taylor-bound): the
 // bound holds at N and fails at N - 1; and the bound really bounds |e^{ix} - sum_{n<N} (ix)^n/n!|.
 TEST(SpectralTables, TaylorTermCountIsTheTightLagrangeBound) {
   for (double x : {0.1, 1.0, 1.5 * test::kPi, 4.0 * test::kPi})

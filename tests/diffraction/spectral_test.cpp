@@ -1,4 +1,4 @@
-// The compiled-in CIE tables against the published checks (data/cie, /work/shared/data/README.md)
+// The compiled-in CIE tables against the published checks (data/cie: CIE 1931 2° observer, ISO/CIE 11664-1; D65, ISO/CIE 11664-2)
 // and the wavelength integration against the 1 nm sums.
 #include <gtest/gtest.h>
 

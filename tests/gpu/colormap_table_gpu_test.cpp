@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "colormap_gaussian_probe.spv.h"
+#include "gpu/render_layout.hpp"
 #include "gpu/scene_upload.hpp"
 #include "gpu/texture_upload.hpp"
 #include "precompute/colormap_filter.hpp"
@@ -53,7 +54,7 @@ class GaussianProbe {
                                   .buffer_count = static_cast<uint32_t>(bindings.size()),
                                   .push_constant_bytes = sizeof(gpu::GpuTile),
                                   .image_count = 0,
-                                  .specialization = {{2, method}}});
+                                  .specialization = {{FACET_RENDER_SPEC_TEXTURE_METHOD, method}}});
     const gpu::GpuTile tile{};
     kernel.dispatch(bindings, &tile, {static_cast<uint32_t>((probes.size() + 63) / 64), 1, 1});
     records.download(probes.data(), probes.size() * sizeof(vec4));

@@ -1,5 +1,5 @@
 // Brute-force quadrature reference for the visible slope distribution D_s (eqs. 12-23 of
-// 000_45241987dd37cfd4.txt), independent of the kernel's closed forms.
+// Heitz et al. 2014, Filtering Non-Linear Transfer Functions on Surfaces, supplemental), independent of the kernel's closed forms.
 //
 // The defining 2D integrals  N = int p_s(s) max(0, W(s)) ds  and the first and central second moments
 // of p_s max(0, W)/N are integrated numerically over the whitened coordinates (y, v) of p_s in the view

@@ -43,7 +43,7 @@ double bessel_scaled(double nu, double x) {
   return sum / std::sqrt(2.0 * kPi * x);
 }
 
-// Endpoint and midpoint formulas (ERRATA 7: eq. 30 is sigma(+1)), in forms stable for every kappa.
+// Endpoint and midpoint formulas (docs/errata.md#cross-section-endpoints-swapped: eq. 30 is sigma(+1)), in forms stable for every kappa.
 double sigma_plus_one(double kappa) {
   // [1 - (1 - e^-k)/k] / (1 - e^-2k); the bracket by its alternating series for small kappa.
   double bracket;

@@ -23,7 +23,7 @@ inline constexpr double kPi = std::numbers::pi;
 
 inline std::vector<SlopeCase> quadrature_cases() {
   std::vector<SlopeCase> cases = {
-      // 001_33a073b2d383f07f.txt Table 3, rows 2-5 (row 1 is theta = 0, tested exactly below).
+      // Heitz et al. 2013, Filtering Color Mapped Textures and Surfaces (supplemental), Table 3, rows 2-5 (row 1 is theta = 0, tested exactly below).
       {1, 0, 1, 1, 0, 1.56, 0},
       {1, 1, 1, 1, 0.5, 1.56, kPi / 2},
       {1, 1, 1, 1, 0.75, 1.56, -kPi / 2},

@@ -69,7 +69,7 @@ TEST(VisibleSlope, QuadratureRulesAgreeAndKernelsMatchThem) {
   std::printf("worst f32: logN %.2g mean %.2g cov %.2g\n", worst32.log_N, worst32.mean, worst32.cov);
 }
 
-// ERRATA item 3: at theta = 0 exactly, D_s = p_s and N = 1.
+// docs/errata.md#visible-slope-normal-incidence: at theta = 0 exactly, D_s = p_s and N = 1.
 TEST(VisibleSlope, NormalIncidenceIsExactlyTheSlopeLaw) {
   const auto d = kernels::f64::visible_slope({1, 0}, {1, 1, 0}, 0.0, 0.0);  // Table 3 row 1
   EXPECT_NEAR(d.N, 1.0, 1e-15);

@@ -1,16 +1,18 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Test probe of render/texture_sampling.glsl: colormap_gaussian(map, mu, sigma) of the direct pass,
-// with the scene's buffers at bindings 0-10, for records (mu, sigma, colour map index, -) at binding
-// 11, each replaced by (rgb, -). Specialization constant 2 selects filtered (3) or filtered:table (4).
+// with the scene's buffers at their slots (layout/render_layout.glsl), for records (mu, sigma, colour
+// map index, -) at the first slot after them, each replaced by (rgb, -). kTextureMethod selects
+// filtered (3) or filtered:table (4).
+#include "layout/render_layout.glsl"
 
 layout(local_size_x = 64) in;
-layout(constant_id = 2) const uint kTextureMethod = 4u;
+layout(constant_id = FACET_RENDER_SPEC_TEXTURE_METHOD) const uint kTextureMethod = 4u;
 
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
 
-layout(std430, binding = 11) buffer Probes { vec4 probes[]; };
+layout(std430, binding = FACET_RENDER_SCENE_BINDING_COUNT) buffer Probes { vec4 probes[]; };
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
