@@ -63,8 +63,6 @@ void write_manifest(const std::filesystem::path& path, const Manifest& manifest)
   Json items = Json::object();
   for (const auto& [output, entry] : manifest) items[output] = to_json(entry);
   const std::string text = Json{{"facet_manifest", kManifestVersion}, {"items", items}}.dump(1) + "\n";
-  std::error_code error;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), error);
   write_file_atomically(path, [&](std::FILE* file) {
     if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) throw Error("write failed");
   });

@@ -1,5 +1,6 @@
 #include "cli/frame_output.hpp"
 
+#include "cli/output_extension.hpp"
 #include "frames/prepared_frames.hpp"
 #include "scene/camera_path.hpp"
 
@@ -14,9 +15,11 @@ std::pair<int, int> ResolutionOptions::resolve(const Camera& camera) const {
 }
 
 void add_resolution_options(CLI::App& command, ResolutionOptions& options) {
-  command.add_option("--width", options.width, "Image width in pixels (default: the scene's)")
+  command
+      .add_option("--width", options.width, "Image width in pixels (default: the scene's, or --height at its aspect)")
       ->check(CLI::Range(1, kMaxResolution));
-  command.add_option("--height", options.height, "Image height in pixels (default: the scene's)")
+  command
+      .add_option("--height", options.height, "Image height in pixels (default: the scene's, or --width at its aspect)")
       ->check(CLI::Range(1, kMaxResolution));
 }
 
@@ -30,7 +33,9 @@ void add_frame_option(CLI::App& command, FrameOption& option) {
 }
 
 void add_output_options(CLI::App& command, frames::FrameFile& options) {
-  command.add_option("-o,--output", options.path, "Output OpenEXR file (scene-linear RGB)")->required();
+  command.add_option("-o,--output", options.path, "Output OpenEXR file (scene-linear RGB)")
+      ->required()
+      ->check(output_extension(".exr", "OpenEXR"));
   command.add_option("--pixel-type", options.pixel_type, "EXR channel type")
       ->check(CLI::IsMember({"half", "float"}))
       ->capture_default_str();

@@ -4,14 +4,20 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/suggest.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"facet: correct, alias-free pictures of sub-pixel detail, and how wrong a fast answer is"};
   app.require_subcommand(1);
-  // Command-line mistakes are errors like any other: one line, "facet: error: ...".
-  app.failure_message([](const CLI::App*, const CLI::Error& e) { return "facet: error: " + std::string(e.what()) + "\n"; });
+  app.set_version_flag("--version", "facet " FACET_VERSION);
+  // Command-line mistakes are errors like any other: one line, "facet: error: ...", naming the
+  // nearest valid word for a mistyped one.
+  app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
+    const std::string unknown = facet::cli::unknown_argument_message(*failed);
+    return "facet: error: " + (unknown.empty() ? std::string(e.what()) : unknown) + "\n";
+  });
   facet::cli::Action action;
   facet::cli::add_render_command(app, action);
   facet::cli::add_info_command(app, action);
@@ -31,6 +37,7 @@ int main(int argc, char** argv) {
     return action();
   } catch (const std::exception& e) {
     std::cerr << "facet: error: " << e.what() << "\n";
-    return 1;
+    const int interrupted = facet::interrupted_exit_status();  // a clean stop on SIGINT/SIGTERM
+    return interrupted != 0 ? interrupted : 1;
   }
 }

@@ -6,6 +6,7 @@
 #include "assets/fbm_noise.hpp"
 #include "assets/gaussian_heightfield.hpp"
 #include "cli/commands.hpp"
+#include "cli/output_extension.hpp"
 
 namespace facet::cli {
 
@@ -17,7 +18,9 @@ struct GridSize {
 };
 
 void add_grid_options(CLI::App& command, GridSize& grid, std::filesystem::path& output) {
-  command.add_option("-o,--output", output, "Output OpenEXR file (grey RGB, 32-bit float)")->required();
+  command.add_option("-o,--output", output, "Output OpenEXR file (grey RGB, 32-bit float)")
+      ->required()
+      ->check(output_extension(".exr", "OpenEXR"));
   command.add_option("--size", grid.size, "Grid width and height in texels")->capture_default_str();
   command.add_option("--width", grid.width, "Grid width in texels (overrides --size)");
   command.add_option("--height", grid.height, "Grid height in texels (overrides --size)");

@@ -32,7 +32,12 @@ extern "C" void on_fatal_signal(int signal_number) {
 }
 
 std::atomic<bool> stop_requested{false};
-extern "C" void on_stop_signal(int) { stop_requested.store(true); }
+std::atomic<int> stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free signal number");
+extern "C" void on_stop_signal(int signal_number) {
+  stop_signal.store(signal_number);
+  stop_requested.store(true);
+}
 
 }  // namespace
 
@@ -40,6 +45,11 @@ const std::atomic<bool>& stop_on_interrupt() {
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
   return stop_requested;
+}
+
+int interrupted_exit_status() {
+  const int signal_number = stop_signal.load();
+  return signal_number == 0 ? 0 : 128 + signal_number;
 }
 
 void install_interrupt_handlers() {

@@ -7,9 +7,6 @@ namespace facet::frames {
 
 void write_frame(const FrameFile& file, const Image& image, const ExrMetadata& metadata) {
   if (file.path.extension() != ".exr") throw Error(file.path.string() + ": the output must be an .exr file");
-  std::error_code error;
-  if (file.path.has_parent_path()) std::filesystem::create_directories(file.path.parent_path(), error);
-  if (error) throw Error(file.path.parent_path().string() + ": cannot create the output directory: " + error.message());
   write_exr(file.path, image, metadata, file.pixel_type == "float" ? ExrPixelType::Float : ExrPixelType::Half);
   if (file.preview) write_png_preview(std::filesystem::path(file.path).replace_extension(".png"), image, file.exposure);
 }

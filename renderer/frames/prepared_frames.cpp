@@ -1,5 +1,7 @@
 #include "frames/prepared_frames.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "common/error.hpp"
@@ -17,7 +19,11 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 std::pair<int, int> frame_size(const Camera& camera, int width, int height) {
-  return {width > 0 ? width : camera.width, height > 0 ? height : camera.height};
+  const double aspect = double(camera.height) / camera.width;
+  auto at_least_1 = [](double side) { return std::max(1, static_cast<int>(std::lround(side))); };
+  if (width > 0) return {width, height > 0 ? height : at_least_1(width * aspect)};
+  if (height > 0) return {at_least_1(height / aspect), height};
+  return {camera.width, camera.height};
 }
 
 PreparedFrames::PreparedFrames(const Scene& scene, FrameMethod method, vk::Context* context)

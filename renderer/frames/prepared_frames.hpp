@@ -38,7 +38,8 @@ struct Frame {
   double wall_ms = 0.0;  // since FrameRequest::since
 };
 
-// The image size: `width` and `height` where > 0, else the camera's.
+// The image size: `width` and `height` where > 0; a side not given follows the camera's aspect
+// (rounded, at least 1 pixel), and neither given is the camera's own size.
 std::pair<int, int> frame_size(const Camera& camera, int width, int height);
 
 class PreparedFrames {

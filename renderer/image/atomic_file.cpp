@@ -42,6 +42,11 @@ void write_file_atomically(const std::filesystem::path& destination, const std::
   bool created = false;
   std::optional<PendingFile> pending;  // removed by the SIGINT/SIGTERM handler if interrupted
   try {
+    // Missing folders are created, as users of every command expect from `-o out/x.exr`.
+    std::error_code folder_error;
+    std::filesystem::create_directories(directory, folder_error);
+    if (folder_error)
+      throw std::runtime_error("cannot create the folder " + directory.string() + ": " + folder_error.message());
     const int fd = ::mkstemp(temporary.data());
     if (fd < 0) throw errno_error("cannot create a temporary file in " + directory.string());
     created = true;

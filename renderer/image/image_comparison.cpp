@@ -20,13 +20,17 @@ ImageComparison compare_images(const Image& test, const Image& reference) {
   return c;
 }
 
+std::vector<std::pair<std::string, double>> named_metrics(const ImageComparison& c) {
+  return {{"rmse", c.rmse},   {"rel_mse", c.rel_mse},
+          {"psnr", c.psnr},   {"max_abs", c.max_abs},
+          {"ssim", c.ssim.value_or(std::nan(""))}, {"flip", c.flip}};
+}
+
 nlohmann::json to_json(const ImageComparison& c) {
-  return {{"rmse", c.rmse},
-          {"rel_mse", c.rel_mse},
-          {"psnr", std::isfinite(c.psnr) ? nlohmann::json(c.psnr) : nlohmann::json(nullptr)},
-          {"max_abs", c.max_abs},
-          {"ssim", c.ssim ? nlohmann::json(*c.ssim) : nlohmann::json(nullptr)},
-          {"flip", c.flip}};
+  nlohmann::json json = nlohmann::json::object();
+  for (const auto& [name, value] : named_metrics(c))
+    json[name] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+  return json;
 }
 
 }  // namespace facet

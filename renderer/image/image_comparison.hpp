@@ -3,6 +3,9 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +24,10 @@ struct ImageComparison {
 
 // Throws facet::Error as check_comparable does.
 ImageComparison compare_images(const Image& test, const Image& reference);
+
+// Each metric under its `facet compare --json` name, in that order; an undefined SSIM is NaN, the PSNR
+// of identical images +inf. Thresholds (`compare --fail`) are checked against these.
+std::vector<std::pair<std::string, double>> named_metrics(const ImageComparison& comparison);
 
 // {rmse, rel_mse, psnr, max_abs, ssim, flip}; JSON has no infinity, so an infinite PSNR and an
 // undefined SSIM are written as null.

@@ -46,14 +46,9 @@ std::string unique_name(const std::filesystem::path& file, std::set<std::string>
 
 // Overrides first; a side not given follows the scene's aspect. Quick runs default to 160 px wide.
 std::pair<int, int> resolution(const BenchOptions& options, const Camera& camera) {
-  const double aspect = double(camera.height) / camera.width;
-  auto at_least_1 = [](double v) { return std::max(1, static_cast<int>(std::lround(v))); };
-  const int width = options.width > 0    ? options.width
-                    : options.height > 0 ? at_least_1(options.height / aspect)
-                    : options.quick      ? std::min(kQuickWidth, camera.width)
-                                         : camera.width;
-  const int height = options.height > 0 ? options.height : at_least_1(width * aspect);
-  return {width, height};
+  const bool quick_width = options.quick && options.width <= 0 && options.height <= 0;
+  return frames::frame_size(camera, quick_width ? std::min(kQuickWidth, camera.width) : options.width,
+                            options.height);
 }
 
 void write_text(const std::filesystem::path& path, const std::string& text) {

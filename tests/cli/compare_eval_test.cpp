@@ -1,4 +1,5 @@
 // `facet compare` and the JSON-lines contract of `facet eval` as scripts see them.
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -6,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "image/exr_io.hpp"
+#include "image/png_io.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -70,6 +72,76 @@ TEST_F(CompareCli, SizeMismatchAndMissingFileAreOneLineErrors) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_TRUE(r.out.empty());
   }
+}
+
+// --fail turns compare into a CI gate: exit 1 and one line naming the metric, value and threshold.
+TEST_F(CompareCli, FailThresholdsGateTheExitCode) {
+  auto a = write("a.exr", Image(16, 16, glm::vec3(0.75f)));
+  auto b = write("b.exr", Image(16, 16, glm::vec3(0.5f)));  // rmse 0.25, psnr 12.04 dB
+  const std::string compare = kFacet + " compare " + a.string() + " " + b.string() + " --json";
+  auto r = run_command(compare + " --fail 'rmse>0.5' --fail 'psnr<10' --fail 'flip>0.99'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  r = run_command(compare + " --fail 'rmse>0.1' --fail 'psnr<10'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "facet: compare: failed: rmse 0.25 > 0.1\n");
+  EXPECT_NEAR(nlohmann::json::parse(r.out).at("rmse").get<double>(), 0.25, 1e-12) << "the metrics still print";
+  r = run_command(compare + " --fail 'psnr<30'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("psnr 12.04"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("< 30"), std::string::npos) << r.err;
+  // Identical images: infinite PSNR passes psnr<30 and crosses psnr>30.
+  EXPECT_EQ(run_command(kFacet + " compare " + a.string() + " " + a.string() + " --fail 'psnr<30'").exit_code, 0);
+  EXPECT_EQ(run_command(kFacet + " compare " + a.string() + " " + a.string() + " --fail 'psnr>30'").exit_code, 1);
+}
+
+TEST_F(CompareCli, UnknownMetricOrMalformedThresholdIsOneLineError) {
+  auto a = write("a.exr", Image(8, 8));
+  for (const std::string spec : {"rsme>0.1", "rmse=0.1", "rmse>abc", ">1"}) {
+    auto r = run_command(kFacet + " compare " + a.string() + " " + a.string() + " --json --fail '" + spec + "'");
+    EXPECT_EQ(r.exit_code, 1) << spec;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(spec), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << spec;
+  }
+  auto r = run_command(kFacet + " compare " + a.string() + " " + a.string() + " --fail 'rsme>0.1'");
+  EXPECT_NE(r.err.find("valid: rmse, rel_mse, psnr, max_abs, ssim, flip"), std::string::npos) << r.err;
+}
+
+// An 8-bit sRGB PNG is decoded to linear: the preview of a linear 0.5 image compares to it within the
+// 8-bit rounding.
+TEST_F(CompareCli, PngInputIsDecodedToLinear) {
+  auto exr = write("half.exr", Image(16, 16, glm::vec3(0.5f)));
+  write_png_preview(dir_ / "half.png", Image(16, 16, glm::vec3(0.5f)));
+  auto r = run_command(kFacet + " compare " + (dir_ / "half.png").string() + " " + exr.string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_LT(nlohmann::json::parse(r.out).at("max_abs").get<double>(), 0.003);
+  r = run_command(kFacet + " compare " + (dir_ / "half.txt").string() + " " + exr.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(".exr or .png"), std::string::npos) << r.err;
+}
+
+// The images differ only in their left half: a crop of the right half is identical.
+TEST_F(CompareCli, CropComparesOnlyThatRegion) {
+  Image left_bright(16, 12, glm::vec3(0.2f));
+  for (int y = 0; y < 12; ++y)
+    for (int x = 0; x < 8; ++x) left_bright.set(x, y, glm::vec3(0.9f));
+  auto a = write("a.exr", left_bright);
+  auto b = write("b.exr", Image(16, 12, glm::vec3(0.2f)));
+  const std::string compare = kFacet + " compare " + a.string() + " " + b.string() + " --json";
+  auto r = run_command(compare + " --crop 8,0,8,12");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("rmse").get<double>(), 0.0);
+  EXPECT_EQ(j.at("width").get<int>(), 8);
+  EXPECT_EQ(j.at("height").get<int>(), 12);
+  r = run_command(compare + " --crop 4,0,8,12");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(nlohmann::json::parse(r.out).at("rmse").get<double>(), 0.0);
+  r = run_command(compare + " --crop 10,0,8,12");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("not inside the 16x12 image"), std::string::npos) << r.err;
 }
 
 // Bad lines get an error and keep their id; the good lines around them are still answered.

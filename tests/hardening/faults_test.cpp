@@ -86,6 +86,7 @@ TEST_F(Faults, SigintAndSigtermDuringReference) {
     const auto r = interrupted(kFacet + " reference " + kScene + " -o " + out() +
                                    " --width 1024 --height 576 --grid 32 --threads 2",
                                signal, 2);
+    EXPECT_EQ(r.exit_code, signal == "INT" ? 130 : 143) << r.err;  // the same statuses as `render`
     expect_clean_failure(r, "interrupt");
   }
 }
