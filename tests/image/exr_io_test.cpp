@@ -12,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 
 #include "common/error.hpp"
@@ -126,16 +128,15 @@ TEST(ExrIo, MetadataIntOutsideInt32IsRejected) {
   EXPECT_TRUE(dir.entries().empty());
 }
 
-TEST(ExrIo, FailedWriteIntoMissingDirectoryLeavesNothing) {
+// Every write creates its missing folders (common/atomic_file): the frame lands whole, no temporary
+// file stays beside it.
+TEST(ExrIo, WriteIntoMissingDirectoriesCreatesThem) {
   TempDir dir;
-  const auto path = dir / "missing" / "x.exr";
-  try {
-    write_exr(path, Image(2, 2), {}, ExrPixelType::Float);
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    expect_one_line_naming(e, path);
-  }
-  EXPECT_TRUE(dir.entries().empty());
+  const auto path = dir / "missing" / "deeper" / "x.exr";
+  write_exr(path, Image(2, 2), {}, ExrPixelType::Float);
+  EXPECT_EQ(read_exr(path).width, 2);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"missing"});
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(path.parent_path()), std::filesystem::directory_iterator()), 1);
 }
 
 TEST(ExrIo, FailedWriteWhereParentIsAFileLeavesNothing) {
