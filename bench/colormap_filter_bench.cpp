@@ -29,14 +29,17 @@ Colormap ramp(int k) {
 // (mu, sigma) pairs cycling over the map and the footprint widths a renderer sees.
 std::vector<glm::dvec2> inputs() {
   std::vector<glm::dvec2> v;
-  for (int i = 0; i < 1024; ++i) v.emplace_back(-0.2 + 1.4 * ((i * 37) % 1024) / 1024.0, 0.3 * ((i * 11) % 64) / 64.0 * ((i * 11) % 64) / 64.0);
+  for (int i = 0; i < 1024; ++i)
+    v.emplace_back(-0.2 + 1.4 * ((i * 37) % 1024) / 1024.0, 0.3 * ((i * 11) % 64) / 64.0 * ((i * 11) % 64) / 64.0);
   return v;
 }
 
 const facet::precompute::PrefilteredColormap& table(int k) {
   static std::map<int, std::unique_ptr<facet::precompute::PrefilteredColormap>> tables;
   auto& t = tables[k];
-  if (!t) t = std::make_unique<facet::precompute::PrefilteredColormap>(facet::precompute::build_prefiltered_colormap(ramp(k), {1e-2}));
+  if (!t)
+    t = std::make_unique<facet::precompute::PrefilteredColormap>(
+        facet::precompute::build_prefiltered_colormap(ramp(k), {1e-2}));
   return *t;
 }
 
@@ -83,7 +86,9 @@ void BM_TableF32(benchmark::State& state) {
   for (auto _ : state) {
     const glm::vec2 p(in[i++ & 1023]);
     const k32::ColormapTableTaps taps = k32::colormap_table_taps(grid, p.x, p.y);
-    auto at = [&](int di, int dj) { return glm::vec3(rgba[k32::colormap_table_index(grid, taps.i0 + di, taps.j0 + dj)]); };
+    auto at = [&](int di, int dj) {
+      return glm::vec3(rgba[k32::colormap_table_index(grid, taps.i0 + di, taps.j0 + dj)]);
+    };
     benchmark::DoNotOptimize(k32::colormap_table_blend(at(0, 0), at(1, 0), at(0, 1), at(1, 1), taps));
   }
   state.SetItemsProcessed(state.iterations());

@@ -38,8 +38,7 @@ template <typename F>
 void run(benchmark::State& state, int ndf, F&& eval) {
   Inputs in = make_inputs(ndf);
   double worst = 0.0;
-  for (std::size_t i = 0; i < in.u.size(); ++i)
-  {
+  for (std::size_t i = 0; i < in.u.size(); ++i) {
     double exact = cross_section(ndf, in.param[i], in.u[i], true);
     worst = std::max(worst, std::abs(eval(in.param[i], in.u[i]) - exact) / std::max(1.0, exact));
   }
@@ -52,11 +51,15 @@ void run(benchmark::State& state, int ndf, F&& eval) {
   state.counters["max_err"] = worst;
 }
 
-void BM_SgExact(benchmark::State& s) { run(s, NDF_SG, [](double a, double u) { return sg_cross_section_exact(a, u); }); }
+void BM_SgExact(benchmark::State& s) {
+  run(s, NDF_SG, [](double a, double u) { return sg_cross_section_exact(a, u); });
+}
 void BM_SgFastFloat(benchmark::State& s) {
   run(s, NDF_SG, [](double a, double u) { return double(f32::ndf_sg_sigma_u(float(u), float(a))); });
 }
-void BM_SgFastDouble(benchmark::State& s) { run(s, NDF_SG, [](double a, double u) { return f64::ndf_sg_sigma_u(u, a); }); }
+void BM_SgFastDouble(benchmark::State& s) {
+  run(s, NDF_SG, [](double a, double u) { return f64::ndf_sg_sigma_u(u, a); });
+}
 void BM_ClosedFormFloat(benchmark::State& s) {
   int ndf = int(s.range(0));
   run(s, ndf, [ndf](double p, double u) { return double(f32::ndf_sigma_u(ndf, float(u), float(p))); });

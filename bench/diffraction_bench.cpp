@@ -19,8 +19,12 @@ namespace {
 using namespace facet::diffraction;
 
 Grating fingers(int samples, double amplitude_nm) {
-  return grating_from_json({{"type", "fingers"}, {"period_nm", 1000}, {"amplitude_nm", amplitude_nm},
-                            {"size_um", 64}, {"samples", samples}, {"finger_length_nm", 4000}},
+  return grating_from_json({{"type", "fingers"},
+                            {"period_nm", 1000},
+                            {"amplitude_nm", amplitude_nm},
+                            {"size_um", 64},
+                            {"samples", samples},
+                            {"finger_length_nm", 4000}},
                            "bench");
 }
 

@@ -26,13 +26,18 @@ namespace {
 using namespace facet::diffraction;
 using Pairs = std::vector<std::pair<glm::dvec3, glm::dvec3>>;
 
-constexpr double kTolerance = 1e-3;  // wavelength sampling and orders
+constexpr double kTolerance = 1e-3;       // wavelength sampling and orders
 constexpr double kTableTolerance = 1e-2;  // pre-integrated interpolation (F.6)
 
 // Snake-scale-like fingers, 512^2 samples over 16 um, coherence 4 um.
 Grating fingers() {
-  return grating_from_json({{"type", "fingers"}, {"period_nm", 1000}, {"amplitude_nm", 80}, {"size_um", 16},
-                            {"samples", 512}, {"finger_length_nm", 2000}, {"coherence_um", 4}},
+  return grating_from_json({{"type", "fingers"},
+                            {"period_nm", 1000},
+                            {"amplitude_nm", 80},
+                            {"size_um", 16},
+                            {"samples", 512},
+                            {"finger_length_nm", 2000},
+                            {"coherence_um", 4}},
                            "bench");
 }
 
@@ -73,7 +78,8 @@ void BM_PreintegratedPrecompute(benchmark::State& state) {
   const Setup& s = setup();
   PreintegratedTables t;
   for (auto _ : state)
-    benchmark::DoNotOptimize(t = build_preintegrated_tables(s.tables, s.samples, s.domain, {.tolerance = kTableTolerance}));
+    benchmark::DoNotOptimize(
+        t = build_preintegrated_tables(s.tables, s.samples, s.domain, {.tolerance = kTableTolerance}));
   state.counters["nodes"] = double(t.nu) * t.nv;
   state.counters["terms"] = t.terms;
   state.counters["wavelengths"] = double(s.samples.lambda_nm.size());
@@ -118,7 +124,8 @@ void run_frame(benchmark::State& state, const Method& method) {
   const Pairs pixels = frame(static_cast<int>(state.range(0)));
   std::vector<glm::dvec3> image(pixels.size());
   for (auto _ : state)
-    tbb::parallel_for(size_t(0), pixels.size(), [&](size_t i) { image[i] = method(pixels[i].first, pixels[i].second); });
+    tbb::parallel_for(size_t(0), pixels.size(),
+                      [&](size_t i) { image[i] = method(pixels[i].first, pixels[i].second); });
   state.counters["err_vs_exact"] = error_vs_exact(method);
   state.counters["px_per_s"] = benchmark::Counter(double(pixels.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
@@ -126,7 +133,8 @@ void run_frame(benchmark::State& state, const Method& method) {
 // range(1) wavelengths uniform over 360..830 nm (0: the tolerance's 169 samples, the reference's own).
 void BM_FrameSpectral(benchmark::State& state) {
   const Setup& s = setup();
-  const WavelengthSamples samples = state.range(1) > 0 ? wavelength_samples(470.0 / double(state.range(1) - 1)) : s.samples;
+  const WavelengthSamples samples =
+      state.range(1) > 0 ? wavelength_samples(470.0 / double(state.range(1) - 1)) : s.samples;
   run_frame(state, [&](const glm::dvec3& wi, const glm::dvec3& wr) {
     return integrate_linear_srgb(samples, [&](double l) { return evaluate_taylor(s.tables, {wi, wr, l}).brdf; });
   });
@@ -136,7 +144,8 @@ void BM_FrameSpectral(benchmark::State& state) {
 const PreintegratedTables& preintegrated(double tolerance) {
   static std::map<double, PreintegratedTables> cache;
   if (!cache.count(tolerance))
-    cache[tolerance] = build_preintegrated_tables(setup().tables, setup().samples, setup().domain, {.tolerance = tolerance});
+    cache[tolerance] =
+        build_preintegrated_tables(setup().tables, setup().samples, setup().domain, {.tolerance = tolerance});
   return cache[tolerance];
 }
 
@@ -160,10 +169,12 @@ void BM_GpuPreintegrated(benchmark::State& state) {
 // The order-restricted shading of a frame on lavapipe (float, manual time = GPU timestamps).
 void BM_GpuOrders(benchmark::State& state) {
   const Setup& s = setup();
-  static const OrderWavelengths plan = plan_order_wavelengths(s.grating, s.tables, kTolerance, Illuminant::D65, s.samples);
+  static const OrderWavelengths plan =
+      plan_order_wavelengths(s.grating, s.tables, kTolerance, Illuminant::D65, s.samples);
   const Pairs pixels = frame(static_cast<int>(state.range(0)));
   static facet::vk::Context context{facet::vk::ContextOptions{}};
-  for (auto _ : state) state.SetIterationTime(1e-3 * facet::test::run_orders_probe(context, s.tables, plan, pixels).gpu_ms);
+  for (auto _ : state)
+    state.SetIterationTime(1e-3 * facet::test::run_orders_probe(context, s.tables, plan, pixels).gpu_ms);
   state.counters["px_per_s"] = benchmark::Counter(double(pixels.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 
@@ -181,12 +192,14 @@ void BM_GpuSpectralEvaluations(benchmark::State& state) {
     benchmark::DoNotOptimize(facet::gpu::evaluate_diffraction(context, s.tables, queries, &timing));
     state.SetIterationTime(1e-3 * timing.gpu_ms);
   }
-  state.counters["evals_per_s"] = benchmark::Counter(double(queries.size()), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["evals_per_s"] =
+      benchmark::Counter(double(queries.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void BM_FrameOrders(benchmark::State& state) {
   const Setup& s = setup();
-  static const OrderWavelengths plan = plan_order_wavelengths(s.grating, s.tables, kTolerance, Illuminant::D65, s.samples);
+  static const OrderWavelengths plan =
+      plan_order_wavelengths(s.grating, s.tables, kTolerance, Illuminant::D65, s.samples);
   run_frame(state, [&](const glm::dvec3& wi, const glm::dvec3& wr) { return evaluate_orders(s.tables, plan, wi, wr); });
   state.counters["restricted"] = plan.restricted;
 }
@@ -207,11 +220,21 @@ BENCHMARK(BM_RenderScene)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
-BENCHMARK(BM_FrameSpectral)->Args({64, 16})->Args({64, 32})->Args({64, 64})->Args({64, 0})
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FrameSpectral)
+    ->Args({64, 16})
+    ->Args({64, 32})
+    ->Args({64, 64})
+    ->Args({64, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(BM_FramePreintegrated)->Args({512, 10})->Args({512, 3})->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_FrameOrders)->Arg(64)->Arg(512)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_GpuPreintegrated)->Args({512, 10})->Args({512, 3})->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_GpuPreintegrated)
+    ->Args({512, 10})
+    ->Args({512, 3})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 BENCHMARK(BM_GpuOrders)->Arg(512)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_GpuSpectralEvaluations)->Args({64, 32})->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 

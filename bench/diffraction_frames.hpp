@@ -33,8 +33,9 @@ inline const Image& exact_diffraction_frame(int index) {
   if (it == cache.end()) {
     diffraction::DiffractionSettings fine;
     fine.wavelengths = 1881;
-    it = cache.emplace(index, cpu::render_direct_cpu(diffraction_scene(index), kErrorSide, kErrorSide, fine,
-                                                     cpu::DiffractionShading::Transform::Exact))
+    it = cache
+             .emplace(index, cpu::render_direct_cpu(diffraction_scene(index), kErrorSide, kErrorSide, fine,
+                                                    cpu::DiffractionShading::Transform::Exact))
              .first;
   }
   return it->second;

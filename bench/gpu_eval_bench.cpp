@@ -39,8 +39,8 @@ std::vector<EvalRecord> visible_slope_inputs(size_t count) {
   std::vector<EvalRecord> records(count);
   for (auto& r : records) {
     float vx = 0.01f + uni(rng), vy = 0.01f + uni(rng);
-    r = {glm::vec4(2 * uni(rng) - 1, 2 * uni(rng) - 1, vx, vy), glm::vec4(0.5f * std::sqrt(vx * vy) * (2 * uni(rng) - 1),
-                                                                          1.57f * uni(rng), 6.28f * uni(rng), 0)};
+    r = {glm::vec4(2 * uni(rng) - 1, 2 * uni(rng) - 1, vx, vy),
+         glm::vec4(0.5f * std::sqrt(vx * vy) * (2 * uni(rng) - 1), 1.57f * uni(rng), 6.28f * uni(rng), 0)};
   }
   return records;
 }

@@ -66,14 +66,14 @@ void BM_Microsurface(benchmark::State& state, const std::string& scene_name, con
       facet::rmse(pass.render(scene.camera, kErrorWidth, kErrorHeight), reference(scene_name, scene));
 }
 
-#define FACET_MICROSURFACE_BENCH(scene, method, label, iterations)                                        \
+#define FACET_MICROSURFACE_BENCH(scene, method, label, iterations)                              \
   BENCHMARK_CAPTURE(BM_Microsurface, scene##_##label, std::string(#scene), std::string(method)) \
-      ->UseManualTime()                                                                                    \
-      ->Unit(benchmark::kMillisecond)                                                                      \
+      ->UseManualTime()                                                                         \
+      ->Unit(benchmark::kMillisecond)                                                           \
       ->Iterations(iterations)
-#define FACET_MICROSURFACE_SCENE(scene)                  \
-  FACET_MICROSURFACE_BENCH(scene, "naive", naive, 3);    \
-  FACET_MICROSURFACE_BENCH(scene, "mip", mip, 3);        \
+#define FACET_MICROSURFACE_SCENE(scene)                     \
+  FACET_MICROSURFACE_BENCH(scene, "naive", naive, 3);       \
+  FACET_MICROSURFACE_BENCH(scene, "mip", mip, 3);           \
   FACET_MICROSURFACE_BENCH(scene, "colormip", colormip, 3); \
   FACET_MICROSURFACE_BENCH(scene, "filtered", filtered, 3); \
   FACET_MICROSURFACE_BENCH(scene, "ss:8", ss8, 1)

@@ -79,10 +79,10 @@ void BM_Scene(benchmark::State& state, const std::string& name, const std::strin
   state.counters["rmse_320x180"] = facet::rmse(pass.render(camera, kErrorWidth, kErrorHeight), reference(name));
 }
 
-#define FACET_TEXTURE_BENCH(scene_name, tag, method, iterations)                                       \
-  BENCHMARK_CAPTURE(BM_Scene, scene_name##_##tag, std::string(#scene_name), std::string(method))        \
-      ->UseManualTime()                                                                                 \
-      ->Unit(benchmark::kMillisecond)                                                                   \
+#define FACET_TEXTURE_BENCH(scene_name, tag, method, iterations)                                 \
+  BENCHMARK_CAPTURE(BM_Scene, scene_name##_##tag, std::string(#scene_name), std::string(method)) \
+      ->UseManualTime()                                                                          \
+      ->Unit(benchmark::kMillisecond)                                                            \
       ->Iterations(iterations)
 
 FACET_TEXTURE_BENCH(colormap_noise_plane, naive, "naive", 5);

@@ -33,7 +33,7 @@ bool skipped(const std::uint8_t* data, std::size_t size) {
     if (a.name != "dataWindow" || a.size != 16) return true;
     const std::uint8_t* box = data + a.offset;  // xMin, yMin, xMax, yMax
     large = facet::fuzz::legal_but_too_large_to_fuzz(little_endian32(box + 8) - little_endian32(box) + 1,
-                                                    little_endian32(box + 12) - little_endian32(box + 4) + 1);
+                                                     little_endian32(box + 12) - little_endian32(box + 4) + 1);
     return false;
   });
   return large;

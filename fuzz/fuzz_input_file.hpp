@@ -19,8 +19,8 @@ class FuzzInputFile {
       : path_(std::filesystem::temp_directory_path() / ("facet_fuzz_" + std::to_string(::getpid())) /
               ("input" + extension)) {
     std::filesystem::create_directories(path_.parent_path());
-    std::ofstream(path_, std::ios::binary).write(reinterpret_cast<const char*>(data),
-                                                  static_cast<std::streamsize>(size));
+    std::ofstream(path_, std::ios::binary)
+        .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
   ~FuzzInputFile() {
     std::error_code ignored;

@@ -16,7 +16,8 @@ namespace {
 bool skipped(const std::uint8_t* data, std::size_t size) {
   if (size < 24 || data[12] != 'I' || data[13] != 'H' || data[14] != 'D' || data[15] != 'R') return false;
   auto big_endian = [&](std::size_t at) {
-    return std::int64_t{data[at]} << 24 | std::int64_t{data[at + 1]} << 16 | std::int64_t{data[at + 2]} << 8 | data[at + 3];
+    return std::int64_t{data[at]} << 24 | std::int64_t{data[at + 1]} << 16 | std::int64_t{data[at + 2]} << 8 |
+           data[at + 3];
   };
   return facet::fuzz::legal_but_too_large_to_fuzz(big_endian(16), big_endian(20));
 }

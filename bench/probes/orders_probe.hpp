@@ -8,8 +8,8 @@
 #include <glm/glm.hpp>
 
 #include "diffraction/order_wavelengths.hpp"
-#include "gpu/diffraction_layout.hpp"
 #include "direction_pair_probe.hpp"
+#include "gpu/diffraction_layout.hpp"
 #include "orders_probe.spv.h"
 
 namespace facet::test {

@@ -53,8 +53,8 @@ double gradient_noise(const FbmParams& p, int k, long long frequency, double x, 
 
 void validate(const FbmParams& p) {
   if (p.width < 1 || p.height < 1 || p.width > kMaxFieldSide || p.height > kMaxFieldSide)
-    throw Error("noise size must be from 1x1 to " + std::to_string(kMaxFieldSide) + "x" + std::to_string(kMaxFieldSide) +
-                ", got " + std::to_string(p.width) + "x" + std::to_string(p.height));
+    throw Error("noise size must be from 1x1 to " + std::to_string(kMaxFieldSide) + "x" +
+                std::to_string(kMaxFieldSide) + ", got " + std::to_string(p.width) + "x" + std::to_string(p.height));
   if (p.octaves < 1 || p.octaves > 24)
     throw Error("noise octaves must be in [1, 24], got " + std::to_string(p.octaves));
   if (!std::isfinite(p.lacunarity) || p.lacunarity < 1.0)

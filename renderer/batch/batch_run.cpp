@@ -160,7 +160,7 @@ ManifestEntry render_item(frames::PreparedFrames& prepared, const Scene& scene, 
   const auto [width, height] = frames::frame_size(camera, job.width, job.height);
   frames::FrameRequest request;
   request.frame = item.frame;
-  request.timings = false;  // the manifest has them; the files stay reproducible
+  request.timings = false;   // the manifest has them; the files stay reproducible
   request.cancel = &cancel;  // a reference frame is abandoned between tiles
   const frames::Frame frame = prepared.render(camera, width, height, request);
   const frames::FrameFile file{root / item.output, job.pixel_type, job.exposure, job.preview};
@@ -194,7 +194,8 @@ void render_pending(const Job& job, const fs::path& root, const std::vector<Load
     const LoadedScene& scene = scenes[first.scene];
     const auto setup_start = std::chrono::steady_clock::now();  // the preparation counts for the group
     std::string group_error;
-    const std::unique_ptr<frames::PreparedFrames> prepared = prepare_group(scene, first.method, job, device, group_error);
+    const std::unique_ptr<frames::PreparedFrames> prepared =
+        prepare_group(scene, first.method, job, device, group_error);
     row.seconds += seconds_since(setup_start);
     for (; next < end && !stop_requested; ++next) {
       const size_t i = pending[next];
@@ -211,8 +212,8 @@ void render_pending(const Job& job, const fs::path& root, const std::vector<Load
         plan.manifest.erase(item.output);
         write_manifest(plan.manifest_path, plan.manifest);
         ++row.failed;
-        std::cerr << "\nfacet: batch: " << item.output << " (" << job.scenes[item.scene].string() << ", "
-                  << item.method << ", frame " << item.frame << ") failed: " << e.what() << "\n";
+        std::cerr << "\nfacet: batch: " << item.output << " (" << job.scenes[item.scene].string() << ", " << item.method
+                  << ", frame " << item.frame << ") failed: " << e.what() << "\n";
       }
       row.seconds += seconds_since(item_start);
       progress.update(static_cast<int64_t>(next + 1));

@@ -11,11 +11,11 @@ namespace facet::batch {
 
 struct BatchOptions {
   std::filesystem::path job;
-  std::string shard = "0/1";     // I/N: this process renders shard I of N
-  bool merge = false;            // merge the shard manifests into the job's manifest instead of rendering
-  std::filesystem::path out_dir; // root of the outputs and the manifest; empty: the job file's directory
-  vk::ContextOptions device;     // created only when a GPU item is to be rendered
-  std::string facet_version;     // part of every item's inputs hash
+  std::string shard = "0/1";      // I/N: this process renders shard I of N
+  bool merge = false;             // merge the shard manifests into the job's manifest instead of rendering
+  std::filesystem::path out_dir;  // root of the outputs and the manifest; empty: the job file's directory
+  vk::ContextOptions device;      // created only when a GPU item is to be rendered
+  std::string facet_version;      // part of every item's inputs hash
 };
 
 // Renders the items of the shard that are not up to date, keeping the manifest current after each,

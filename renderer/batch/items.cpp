@@ -13,8 +13,8 @@ namespace {
 std::string file_safe(const std::string& text) {
   std::string safe = text;
   for (char& c : safe) {
-    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
-                      c == '_' || c == '-';
+    const bool keep =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '-';
     if (!keep) c = '_';
   }
   return safe;

@@ -34,7 +34,9 @@ struct Shard {
   int index = 0;
   int count = 1;
   static Shard parse(const std::string& text);  // "I/N"; throws facet::Error
-  bool owns(size_t item_position) const { return static_cast<int>(item_position % static_cast<size_t>(count)) == index; }
+  bool owns(size_t item_position) const {
+    return static_cast<int>(item_position % static_cast<size_t>(count)) == index;
+  }
   bool whole() const { return count == 1; }
 };
 

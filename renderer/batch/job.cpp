@@ -23,7 +23,8 @@ std::vector<std::string> read_strings(JsonObjectReader& r, const std::string& ke
   if (!array.is_array() || array.empty()) r.fail(key, "must be a non-empty array of strings");
   std::vector<std::string> strings;
   for (const Json& item : array) {
-    if (!item.is_string() || item.get_ref<const std::string&>().empty()) r.fail(key, "must be a non-empty array of strings");
+    if (!item.is_string() || item.get_ref<const std::string&>().empty())
+      r.fail(key, "must be a non-empty array of strings");
     strings.push_back(item.get<std::string>());
   }
   return strings;
@@ -56,7 +57,8 @@ Job load_job(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::error_code error;
   if (!in || std::filesystem::is_directory(file, error)) throw Error(file.string() + ": cannot open for reading");
-  const Json document = Json::parse(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>(), nullptr, false);
+  const Json document =
+      Json::parse(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>(), nullptr, false);
   if (document.is_discarded()) throw Error(file.string() + ": invalid JSON");
 
   JsonObjectReader r(document, file.string(), "");
@@ -74,7 +76,8 @@ Job load_job(const std::filesystem::path& file) {
   job.methods = read_strings(r, "methods");
   if (r.has("frames")) job.frames = read_frames(r);
   job.output = r.string("output");
-  if (std::filesystem::path(job.output).extension() != ".exr") r.fail("output", "must be a path pattern ending in .exr");
+  if (std::filesystem::path(job.output).extension() != ".exr")
+    r.fail("output", "must be a path pattern ending in .exr");
   try {
     expand_output(job.output, "scene", "method", 0);
   } catch (const Error& e) {

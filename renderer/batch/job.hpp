@@ -19,10 +19,10 @@ struct Job {
   int width = 0, height = 0;                  // 0: the scene camera's
   std::string pixel_type = "half";
   bool preview = true;
-  double exposure = 0.0;                      // of the PNG preview, in stops
-  int grid = 32;                              // reference: N x N rays per pixel
-  std::int64_t seed = 1;                      // reference: jitter seed
-  std::filesystem::path manifest;             // relative to the output root
+  double exposure = 0.0;           // of the PNG preview, in stops
+  int grid = 32;                   // reference: N x N rays per pixel
+  std::int64_t seed = 1;           // reference: jitter seed
+  std::filesystem::path manifest;  // relative to the output root
 };
 
 // Reads and validates `file`; throws facet::Error with one line naming the file and key.

@@ -19,8 +19,9 @@ using Json = nlohmann::json;
 constexpr int kManifestVersion = 1;
 
 Json to_json(const ManifestEntry& entry) {
-  return {{"scene", entry.scene},        {"method", entry.method}, {"frame", entry.frame},
-          {"inputs_hash", entry.inputs_hash}, {"files", entry.files}, {"render_ms", entry.render_ms}};
+  return {{"scene", entry.scene}, {"method", entry.method},
+          {"frame", entry.frame}, {"inputs_hash", entry.inputs_hash},
+          {"files", entry.files}, {"render_ms", entry.render_ms}};
 }
 
 ManifestEntry from_json(const Json& json) {

@@ -12,12 +12,12 @@
 namespace facet::batch {
 
 struct ManifestEntry {
-  std::string scene;   // the scene file, as the job names it
+  std::string scene;  // the scene file, as the job names it
   std::string method;
   int frame = 0;
   std::string inputs_hash;
   std::map<std::string, std::string> files;  // output root-relative path -> content hash (EXR, PNG preview)
-  double render_ms = 0.0;                     // wall time of the item, for the record
+  double render_ms = 0.0;                    // wall time of the item, for the record
 };
 
 // Keyed by Item::output.

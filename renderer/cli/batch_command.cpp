@@ -27,7 +27,8 @@ void add_batch_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<BatchCommandOptions>();
   auto& batch = options->batch;
   command->add_option("job", batch.job, "Job file (JSON, see docs/batch.md)")->required();
-  command->add_option("--shard", batch.shard, "I/N: render only shard I (0-based) of N (Slurm arrays, k8s Indexed Jobs)")
+  command
+      ->add_option("--shard", batch.shard, "I/N: render only shard I (0-based) of N (Slurm arrays, k8s Indexed Jobs)")
       ->capture_default_str();
   command->add_flag("--merge", batch.merge, "Merge the shard manifests into the job's manifest, then exit");
   command->add_option("--out-dir", batch.out_dir,

@@ -91,14 +91,16 @@ void add_compare_command(CLI::App& app, Action& action) {
   command->add_option("--heatmap-metric", options->heatmap_metric, "Per-pixel error shown in the heat map")
       ->check(CLI::IsMember({"flip", "abs", "rel"}))
       ->capture_default_str();
-  command->add_option("--heatmap-max", options->heatmap_max,
-                      "Error shown at full scale (default: 1 for FLIP, else the map's maximum)")
+  command
+      ->add_option("--heatmap-max", options->heatmap_max,
+                   "Error shown at full scale (default: 1 for FLIP, else the map's maximum)")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--json", options->json,
                     "Print one JSON object: rmse, rel_mse, psnr (null if identical), max_abs, ssim, flip");
-  command->add_option("--fail", options->fail,
-                      "METRIC>VALUE or METRIC<VALUE (repeatable): exit 1 if a metric crosses it, e.g. rmse>0.01, "
-                      "psnr<30")
+  command
+      ->add_option("--fail", options->fail,
+                   "METRIC>VALUE or METRIC<VALUE (repeatable): exit 1 if a metric crosses it, e.g. rmse>0.01, "
+                   "psnr<30")
       ->allow_extra_args(false);
   command->add_option("--crop", options->crop, "x,y,w,h: compare only this region of both images")
       ->delimiter(',')

@@ -13,8 +13,7 @@ void add_eval_options(CLI::App& command, EvalOptions& options) {
   command.add_flag("--validation", options.vulkan.validation, "Enable the Vulkan validation layers");
 }
 
-std::vector<gpu::EvalRecord> run_gpu_eval(const EvalOptions& options, const char* name,
-                                          std::span<const uint32_t> spirv,
+std::vector<gpu::EvalRecord> run_gpu_eval(const EvalOptions& options, const char* name, std::span<const uint32_t> spirv,
                                           std::span<const gpu::EvalRecord> inputs) {
   vk::Context context({options.vulkan.device, options.vulkan.validation});
   auto outputs = gpu::run_batch_eval(context, name, spirv, inputs);

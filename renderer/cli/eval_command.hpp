@@ -24,8 +24,7 @@ struct EvalOptions {
 void add_eval_options(CLI::App& command, EvalOptions& options);
 
 // Runs a GPU eval kernel on `inputs` and fails if the validation layer reported anything.
-std::vector<gpu::EvalRecord> run_gpu_eval(const EvalOptions& options, const char* name,
-                                          std::span<const uint32_t> spirv,
+std::vector<gpu::EvalRecord> run_gpu_eval(const EvalOptions& options, const char* name, std::span<const uint32_t> spirv,
                                           std::span<const gpu::EvalRecord> inputs);
 
 void add_eval_visible_slope(CLI::App& eval, Action& action);

@@ -47,8 +47,8 @@ CrossSectionQuery parse_query(const nlohmann::json& line) {
 }  // namespace
 
 void add_eval_cross_section(CLI::App& eval, Action& action) {
-  auto* command = eval.add_subcommand(
-      "cross-section", "Cross-section sigma(u) of an NDF: lines {ndf, param, u[, id]} -> {id, sigma}");
+  auto* command = eval.add_subcommand("cross-section",
+                                      "Cross-section sigma(u) of an NDF: lines {ndf, param, u[, id]} -> {id, sigma}");
   auto options = std::make_shared<EvalOptions>();
   auto method = std::make_shared<std::string>("exact");
   add_eval_options(*command, *options);

@@ -105,8 +105,8 @@ std::vector<nlohmann::json> evaluate_lines(const DiffractionOptions& options, co
 }  // namespace
 
 void add_eval_diffraction(CLI::App& eval, Action& action) {
-  auto* command = eval.add_subcommand(
-      "diffraction", "Stam's diffraction BRDF: lines {wi, wr, lambda_nm[, id]} -> {id, brdf, P2}");
+  auto* command =
+      eval.add_subcommand("diffraction", "Stam's diffraction BRDF: lines {wi, wr, lambda_nm[, id]} -> {id, brdf, P2}");
   auto options = std::make_shared<DiffractionOptions>();
   add_eval_options(*command, options->eval);
   command->add_option("--grating", options->grating, "The grating: inline JSON or a JSON file")->required();

@@ -39,8 +39,7 @@ void add_output_options(CLI::App& command, frames::FrameFile& options) {
   command.add_option("--pixel-type", options.pixel_type, "EXR channel type")
       ->check(CLI::IsMember({"half", "float"}))
       ->capture_default_str();
-  command.add_option("--exposure", options.exposure, "Exposure of the PNG preview, in stops")
-      ->capture_default_str();
+  command.add_option("--exposure", options.exposure, "Exposure of the PNG preview, in stops")->capture_default_str();
   command.add_flag("!--no-preview", options.preview, "Do not write the sRGB PNG preview beside the EXR");
 }
 

@@ -15,8 +15,8 @@ void add_info_command(CLI::App& app, Action& action) {
       std::cout << "facet " << FACET_VERSION << " (C++20, " << FACET_BUILD_TYPE << " build)\n";
       std::cout << "Vulkan devices:\n";
       for (const auto& d : vk::list_devices())
-        std::cout << "  [" << d.index << "] " << d.name << " (" << d.type << ", Vulkan " << d.api_version
-                  << ", " << d.driver << ")" << (d.is_lavapipe ? " lavapipe" : "") << "\n";
+        std::cout << "  [" << d.index << "] " << d.name << " (" << d.type << ", Vulkan " << d.api_version << ", "
+                  << d.driver << ")" << (d.is_lavapipe ? " lavapipe" : "") << "\n";
       vk::Context context({options->device, options->validation});
       const auto& limits = context.limits();
       std::cout << "Selected: [" << context.info().index << "] " << context.info().name << "\n"

@@ -34,8 +34,7 @@ void write_json_error(std::ostream& out, const nlohmann::json& id, const std::st
 // error), evaluates all parsed inputs in one call (so a GPU evaluates one batch) and writes
 // the answers in input order.
 template <class Input>
-void run_json_lines(std::istream& in, std::ostream& out,
-                    const std::function<Input(const nlohmann::json&)>& parse,
+void run_json_lines(std::istream& in, std::ostream& out, const std::function<Input(const nlohmann::json&)>& parse,
                     const std::function<std::vector<nlohmann::json>(const std::vector<Input>&)>& evaluate) {
   std::vector<JsonLine> lines = read_json_lines(in);
   std::vector<Input> inputs;

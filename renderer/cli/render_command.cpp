@@ -70,15 +70,17 @@ void add_render_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<RenderOptions>();
   command->add_option("scene", options->scene, "Scene file (JSON, see scenes/README.md)")->required();
   add_device_options(*command, options->device);
-  command->add_option("--method", options->method,
-                      "How sub-pixel detail becomes a pixel: naive, mip, colormip, ss:K (K x K rays), filtered, "
-                      "filtered:table")
+  command
+      ->add_option("--method", options->method,
+                   "How sub-pixel detail becomes a pixel: naive, mip, colormip, ss:K (K x K rays), filtered, "
+                   "filtered:table")
       ->capture_default_str();
   command->add_option("--diffraction", options->diffraction,
                       "How diffraction materials become colours: spectral, preintegrated or orders (default: each "
                       "material's \"method\")");
-  command->add_option("--wavelengths", options->wavelengths,
-                      "Wavelength samples of the diffraction materials' colour integral (default: from their tolerance)")
+  command
+      ->add_option("--wavelengths", options->wavelengths,
+                   "Wavelength samples of the diffraction materials' colour integral (default: from their tolerance)")
       ->check(CLI::Range(2, 4096));
   command->add_option("--taylor", options->taylor, "Taylor terms of the diffraction BRDF (default: from the tolerance)")
       ->check(CLI::Range(1, 64));

@@ -12,7 +12,8 @@ namespace {
 std::vector<std::string> valid_names(const CLI::App& app, bool option) {
   std::vector<std::string> names;
   if (!option) {
-    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+      names.push_back(sub->get_name());
     return names;
   }
   for (const CLI::Option* opt : app.get_options()) {

@@ -27,7 +27,8 @@ void write_stderr(const char* text) {
 extern "C" void on_fatal_signal(int signal_number) {
   for (Slot& slot : slots)
     if (slot.published.load(std::memory_order_acquire)) ::unlink(slot.path);
-  write_stderr(signal_number == SIGINT ? "facet: error: interrupted by SIGINT\n" : "facet: error: terminated by SIGTERM\n");
+  write_stderr(signal_number == SIGINT ? "facet: error: interrupted by SIGINT\n"
+                                       : "facet: error: terminated by SIGTERM\n");
   ::_exit(128 + signal_number);
 }
 

@@ -3,8 +3,8 @@
 // SIGINT and SIGTERM: every temporary output file still being written is removed, one line
 // "facet: error: interrupted by SIGINT" goes to stderr and the process exits with 128 + signal,
 // so a killed job leaves no partial file. Commands that can stop cleanly (`reference`, `batch`)
-// switch to stop_on_interrupt() while they run, and exit with the same 130 / 143 when they stop. SIGXFSZ (a file-size limit, `ulimit -f`)
-// is ignored, so the write fails with EFBIG and becomes an ordinary one-line error.
+// switch to stop_on_interrupt() while they run, and exit with the same 130 / 143 when they stop. SIGXFSZ (a file-size
+// limit, `ulimit -f`) is ignored, so the write fails with EFBIG and becomes an ordinary one-line error.
 #pragma once
 
 #include <atomic>

@@ -17,23 +17,20 @@ std::string format_duration(double seconds) {
     std::snprintf(text, sizeof text, "%lldh%02lldm", static_cast<long long>(s / 3600),
                   static_cast<long long>(s % 3600 / 60));
   else if (s >= 60)
-    std::snprintf(text, sizeof text, "%lldm%02llds", static_cast<long long>(s / 60),
-                  static_cast<long long>(s % 60));
+    std::snprintf(text, sizeof text, "%lldm%02llds", static_cast<long long>(s / 60), static_cast<long long>(s % 60));
   else
     std::snprintf(text, sizeof text, "%llds", static_cast<long long>(s));
   return text;
 }
 
-std::string format_progress(const std::string& label, int64_t done, int64_t total, double elapsed_s,
-                            int width) {
+std::string format_progress(const std::string& label, int64_t done, int64_t total, double elapsed_s, int width) {
   double fraction = total > 0 ? std::clamp(static_cast<double>(done) / total, 0.0, 1.0) : 1.0;
   int filled = static_cast<int>(fraction * width);
   // Remaining time extrapolated from the mean rate so far; unknown before any progress.
   double eta = done > 0 ? elapsed_s * (1.0 - fraction) / fraction : -1.0;
   char numbers[96];
-  std::snprintf(numbers, sizeof numbers, "] %3d%% %lld/%lld  elapsed %s  ETA %s",
-                static_cast<int>(fraction * 100.0), static_cast<long long>(done),
-                static_cast<long long>(total), format_duration(elapsed_s).c_str(),
+  std::snprintf(numbers, sizeof numbers, "] %3d%% %lld/%lld  elapsed %s  ETA %s", static_cast<int>(fraction * 100.0),
+                static_cast<long long>(done), static_cast<long long>(total), format_duration(elapsed_s).c_str(),
                 format_duration(eta).c_str());
   return label + " [" + std::string(filled, '#') + std::string(width - filled, '.') + numbers;
 }

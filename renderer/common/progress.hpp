@@ -16,8 +16,7 @@ std::string format_duration(double seconds);
 
 // The bar's text for `done` of `total` after `elapsed_s` seconds, without the leading \r;
 // width is the number of cells of the bar itself.
-std::string format_progress(const std::string& label, int64_t done, int64_t total,
-                            double elapsed_s, int width = 30);
+std::string format_progress(const std::string& label, int64_t done, int64_t total, double elapsed_s, int width = 30);
 
 class ProgressBar {
  public:

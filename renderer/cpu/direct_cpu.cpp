@@ -33,16 +33,17 @@ Image render_direct_cpu(const Scene& scene, int width, int height, const diffrac
   Image image(width, height);
   tbb::parallel_for(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
-      glm::dvec3 d = k::camera_ray_direction(camera.forward, camera.right, camera.up, glm::dvec2(x + 0.5, y + 0.5), resolution);
+      glm::dvec3 d =
+          k::camera_ray_direction(camera.forward, camera.right, camera.up, glm::dvec2(x + 0.5, y + 0.5), resolution);
       glm::dvec3 color = scene.background;
       if (auto hit = caster.intersect(camera.origin, d)) {
         glm::dvec3 n = hit->shading_normal;
         // Same scale-relative offset as the GPU pass (shaders/render/direct_pass.glsl).
         glm::dvec3 origin = hit->position + n * (1e-4 * std::max(1.0, glm::length(hit->position)));
-        double visibility =
-            glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;
+        double visibility = glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;
         color = shade_macro_surface(scene, scene.materials[hit->material], n, -d, hit->uv, visibility);
-        if (diffracted.handles(hit->material)) color += diffracted.radiance(hit->material, n, hit->dpdu, -d, visibility);
+        if (diffracted.handles(hit->material))
+          color += diffracted.radiance(hit->material, n, hit->dpdu, -d, visibility);
       }
       image.set(x, y, glm::vec3(color));
     }

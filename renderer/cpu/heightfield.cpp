@@ -156,8 +156,9 @@ double HeightField::cell_hit(const LocalRay& r, int tile_x, int tile_y, int i, i
   const std::int64_t gi = static_cast<std::int64_t>(tile_x) * width_ + i,
                      gj = static_cast<std::int64_t>(tile_y) * height_ + j;
   const Cell c = cell(i, j);
-  const double t = kernels::f64::heightfield_cell_hit(r.o, r.d, r.inv_d, static_cast<double>(gi), static_cast<double>(gj),
-                                                      glm::dvec4(c.z00, c.z10, c.z01, c.z11), t_lo, t_hi);
+  const double t =
+      kernels::f64::heightfield_cell_hit(r.o, r.d, r.inv_d, static_cast<double>(gi), static_cast<double>(gj),
+                                         glm::dvec4(c.z00, c.z10, c.z01, c.z11), t_lo, t_hi);
   return t > 0.0 ? t : kInf;
 }
 

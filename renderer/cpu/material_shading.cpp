@@ -33,15 +33,15 @@ glm::dvec3 microsurface_albedo(const MicrosurfaceMaterial& material, double heig
   return albedo;
 }
 
-glm::dvec3 beckmann_specular_radiance(const BeckmannSpecular& specular, glm::dvec3 n, glm::dvec3 tangent,
-                                      glm::dvec3 v, glm::dvec3 l, glm::dvec3 light_irradiance, double visibility) {
+glm::dvec3 beckmann_specular_radiance(const BeckmannSpecular& specular, glm::dvec3 n, glm::dvec3 tangent, glm::dvec3 v,
+                                      glm::dvec3 l, glm::dvec3 light_irradiance, double visibility) {
   if (visibility == 0.0) return glm::dvec3(0.0);
   const double f_cos = k::beckmann_facet_specular(n, tangent, v, l, specular.alpha);
   return light_irradiance * specular.reflectance * (f_cos * visibility);
 }
 
-glm::dvec3 shade_macro_surface(const Scene& scene, const Material& material, glm::dvec3 n, glm::dvec3 v,
-                               glm::dvec2 uv, double visibility) {
+glm::dvec3 shade_macro_surface(const Scene& scene, const Material& material, glm::dvec3 n, glm::dvec3 v, glm::dvec2 uv,
+                               double visibility) {
   const glm::dvec3 l = scene.light.direction;
   return std::visit(
       [&](const auto& m) -> glm::dvec3 {

@@ -95,8 +95,9 @@ Hit analytic_hit(const Scene& scene, const std::vector<PlaneFrame>& frames, cons
     hit.position = o + a.t * d;
     const PlaneFrame& frame = frames[a.index];  // unit normal: from the loader, not always from code
     hit.geometric_normal = frame.normal;
-    hit.uv = glm::dvec2(glm::dot(hit.position - p.point, frame.tangent), glm::dot(hit.position - p.point, frame.bitangent)) *
-             p.uv_scale;
+    hit.uv =
+        glm::dvec2(glm::dot(hit.position - p.point, frame.tangent), glm::dot(hit.position - p.point, frame.bitangent)) *
+        p.uv_scale;
     hit.dpdu = frame.tangent / p.uv_scale.x;
     hit.material = p.material;
   }

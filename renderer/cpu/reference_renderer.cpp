@@ -49,9 +49,9 @@ class PixelIntegrator {
     glm::dvec3 sum(0.0);
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < n; ++i) {
-        const glm::dvec2 offset =
-            options_.jitter ? reference_jitter(options_.seed, index, static_cast<std::uint64_t>(j) * n + i)
-                            : glm::dvec2(0.5);
+        const glm::dvec2 offset = options_.jitter
+                                      ? reference_jitter(options_.seed, index, static_cast<std::uint64_t>(j) * n + i)
+                                      : glm::dvec2(0.5);
         const glm::dvec2 film(x + (i + offset.x) / n, y + (j + offset.y) / n);
         const auto sample = static_cast<std::uint64_t>(j) * n + i;
         sum += radiance(k::camera_ray_direction(camera_.forward, camera_.right, camera_.up, film, resolution_),
@@ -76,7 +76,8 @@ class PixelIntegrator {
     const auto hit = world_.intersect(camera_.origin, d);
     if (!hit) return scene_.background;
     const glm::dvec3 l = scene_.light.direction;
-    const double visibility = glm::dot(hit->normal, l) > 0.0 && world_.occluded(world_.shadow_origin(*hit), l) ? 0.0 : 1.0;
+    const double visibility =
+        glm::dot(hit->normal, l) > 0.0 && world_.occluded(world_.shadow_origin(*hit), l) ? 0.0 : 1.0;
     const Material& material = scene_.materials[hit->material];
     if (!hit->micro) {
       glm::dvec3 c = shade_macro_surface(scene_, material, hit->normal, -d, hit->uv, visibility);
@@ -88,7 +89,8 @@ class PixelIntegrator {
     glm::dvec3 c = k::lambert_radiance(microsurface_albedo(m, hit->height, hit->slope), hit->normal, l,
                                        scene_.light.irradiance, visibility, scene_.ambient);
     if (m.specular)
-      c += beckmann_specular_radiance(*m.specular, hit->normal, hit->tangent, -d, l, scene_.light.irradiance, visibility);
+      c += beckmann_specular_radiance(*m.specular, hit->normal, hit->tangent, -d, l, scene_.light.irradiance,
+                                      visibility);
     return c;
   }
 

@@ -21,8 +21,8 @@ struct ReferenceOptions {
   int width = 0, height = 0;  // image size, > 0
   int grid = 32;              // N: N×N samples per pixel, in [1, 4096]
   std::uint64_t seed = 1;
-  bool jitter = true;         // false: the N×N sub-pixel centres (grid 1: the pixel centre)
-  int threads = 0;            // 0: all cores
+  bool jitter = true;  // false: the N×N sub-pixel centres (grid 1: the pixel centre)
+  int threads = 0;     // 0: all cores
   int tile_size = 16;
   const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop between tiles
   std::function<void(std::int64_t tiles_done, std::int64_t tiles_total)> progress;  // called serialised

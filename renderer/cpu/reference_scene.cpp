@@ -39,7 +39,8 @@ ReferenceScene::ReferenceScene(const Scene& scene)
     : scene_(scene), macro_(without_microsurfaces(scene)), caster_(macro_) {
   for (const Plane& p : scene.planes) {
     if (is_microsurface(scene, p.material))
-      patches_.push_back({make_height_field(p, std::get<MicrosurfaceMaterial>(scene.materials[p.material])), p.material});
+      patches_.push_back(
+          {make_height_field(p, std::get<MicrosurfaceMaterial>(scene.materials[p.material])), p.material});
   }
 }
 
@@ -52,8 +53,8 @@ std::optional<SurfaceHit> ReferenceScene::intersect(glm::dvec3 o, glm::dvec3 d) 
     if (!hit) continue;
     // The field's normal is the upper side's; turn it toward the ray as RayCaster does.
     const glm::dvec3 n = glm::dot(hit->normal, d) > 0.0 ? -hit->normal : hit->normal;
-    best = SurfaceHit{hit->t,    hit->position, n,           hit->uv,    patch.material, glm::dvec3(0.0),
-                      true,      hit->height,   hit->slope, patch.field.placement().tangent};
+    best = SurfaceHit{hit->t,          hit->position, n,           hit->uv,    patch.material,
+                      glm::dvec3(0.0), true,          hit->height, hit->slope, patch.field.placement().tangent};
   }
   return best;
 }

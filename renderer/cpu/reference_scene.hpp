@@ -50,8 +50,8 @@ class ReferenceScene {
   static Scene without_microsurfaces(const Scene& scene);
 
   const Scene& scene_;
-  Scene macro_;        // the scene without its microsurface planes
-  RayCaster caster_;   // over macro_
+  Scene macro_;       // the scene without its microsurface planes
+  RayCaster caster_;  // over macro_
   std::vector<Patch> patches_;
 };
 

@@ -19,8 +19,8 @@ namespace facet::diffraction {
 
 class ChebyshevTransform {
  public:
-  static constexpr int kNodes = 16;          // n per piece
-  static constexpr double kMaxPiece = 4.0;   // L: 2 (L/4)^16 / 16! = 9.6e-14 per part
+  static constexpr int kNodes = 16;         // n per piece
+  static constexpr double kMaxPiece = 4.0;  // L: 2 (L/4)^16 / 16! = 9.6e-14 per part
 
   // Covers x in [-x_max, 0] for the band |j_x|, |j_y| <= tables.J (x_max = tables.x_max by default).
   ChebyshevTransform(const Grating& grating, const SpectralTables& tables, double x_max = 0.0);

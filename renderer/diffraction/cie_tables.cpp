@@ -32,8 +32,9 @@ struct UniformTable {
     const auto& p3 = rows[std::min(i + 2, last)];
     std::vector<double> v(p1.size());
     for (size_t c = 0; c < v.size(); ++c)
-      v[c] = p1[c] + 0.5 * t * (p2[c] - p0[c] + t * (2 * p0[c] - 5 * p1[c] + 4 * p2[c] - p3[c] +
-                                                     t * (3 * (p1[c] - p2[c]) + p3[c] - p0[c])));
+      v[c] = p1[c] + 0.5 * t *
+                         (p2[c] - p0[c] +
+                          t * (2 * p0[c] - 5 * p1[c] + 4 * p2[c] - p3[c] + t * (3 * (p1[c] - p2[c]) + p3[c] - p0[c])));
     return v;
   }
 };

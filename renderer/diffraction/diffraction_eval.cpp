@@ -24,8 +24,8 @@ DiffractionField window_sum(const SpectralTables& t, const DiffractionGeometry& 
   for (int b = 0; b < bins.count.x * bins.count.y; ++b) {
     const glm::ivec2 j = diffraction_window_bin(bins, b);
     if (!diffraction_table_entry(0, j.x, j.y, t.J, 1).valid) continue;
-    const double weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(j.x, j.y, t.period_nm),
-                                                    t.sigma_nm);
+    const double weight =
+        diffraction_window_weight(g.alpha - diffraction_bin_frequency(j.x, j.y, t.period_nm), t.sigma_nm);
     field = diffraction_field_add(field, weight, bin_taylor(j.x, j.y));
   }
   return field;
@@ -71,8 +71,7 @@ DiffractionResult evaluate_from_bins(const SpectralTables& t, const DiffractionQ
   return result(t, g, window_sum(t, g, glm::ivec2(1, 1), [&](int jx, int jy) {
                   const std::complex<double> flat = (jx == 0 && jy == 0) ? 1.0 : 0.0;
                   const std::complex<double> rest = (bin_coefficient(jx, jy) - flat) / w;
-                  return DiffractionTaylor(real2(flat.real(), 0.0), real2(rest.real(), rest.imag()), real2(0.0),
-                                           0.0);
+                  return DiffractionTaylor(real2(flat.real(), 0.0), real2(rest.real(), rest.imag()), real2(0.0), 0.0);
                 }));
 }
 

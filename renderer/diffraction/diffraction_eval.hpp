@@ -13,8 +13,8 @@
 namespace facet::diffraction {
 
 struct DiffractionQuery {
-  glm::dvec3 wi;     // unit vector toward the light, surface frame, z up, z >= 0
-  glm::dvec3 wr;     // unit vector toward the viewer
+  glm::dvec3 wi;  // unit vector toward the light, surface frame, z up, z >= 0
+  glm::dvec3 wr;  // unit vector toward the viewer
   double lambda_nm;
 };
 

@@ -54,14 +54,18 @@ double expected_nodes(const DiffractionOrderLattice& L) {
 // within rho of one point: O <= prod (floor(2 rho / f) + 1)), so sum_j len_j <= O (lambda_max -
 // lambda_min), and over the F.10 candidates C: nodes <= C (peak bound + 1) + O range / max_step.
 double most_nodes(const DiffractionOrderLattice& L, double candidates) {
-  const double per_peak = 2.0 * std::sqrt(2.0) * L.reach * L.sigma_nm * (kCieLambdaMaxNm / kCieLambdaMinNm) / L.peak_step;
+  const double per_peak =
+      2.0 * std::sqrt(2.0) * L.reach * L.sigma_nm * (kCieLambdaMaxNm / kCieLambdaMinNm) / L.peak_step;
   const glm::dvec2 overlap = glm::floor(2.0 * L.reach / L.frequency) + 1.0;
-  return std::ceil(candidates) * (per_peak + 1.0) + overlap.x * overlap.y * (kCieLambdaMaxNm - kCieLambdaMinNm) / L.max_step;
+  return std::ceil(candidates) * (per_peak + 1.0) +
+         overlap.x * overlap.y * (kCieLambdaMaxNm - kCieLambdaMinNm) / L.max_step;
 }
 
 }  // namespace
 
-PatchRepeats patch_repeats(const Grating& grating) { return {repeats_along(grating, 1, 0), repeats_along(grating, 0, 1)}; }
+PatchRepeats patch_repeats(const Grating& grating) {
+  return {repeats_along(grating, 1, 0), repeats_along(grating, 0, 1)};
+}
 
 OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTables& tables, double tolerance,
                                         Illuminant light, WavelengthSamples fallback) {
@@ -83,8 +87,8 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
   plan.worst_orders = worst_orders(L);
   plan.expected_nodes = expected_nodes(L);
   plan.most_nodes = most_nodes(L, plan.worst_orders);
-  plan.restricted = plan.worst_orders <= kMaxOrdersPerPixel &&
-                    plan.expected_nodes < static_cast<double>(fallback.lambda_nm.size());
+  plan.restricted =
+      plan.worst_orders <= kMaxOrdersPerPixel && plan.expected_nodes < static_cast<double>(fallback.lambda_nm.size());
   plan.lambda0_nm = kCieLambdaMinNm;
   for (double lambda = kCieLambdaMinNm; lambda <= kCieLambdaMaxNm; lambda += 1.0)
     plan.observer.push_back(xyz_density(lambda, light));

@@ -34,11 +34,11 @@ constexpr int kMaxOrdersPerPixel = 128;
 // the lattice covers every wavelength with several orders, each integrated on its own).
 struct OrderWavelengths {
   kernels::f64::DiffractionOrderLattice lattice{};
-  bool restricted = false;  // false: evaluate_orders runs the spectral path on `fallback`
-  double worst_orders = 0;  // the F.10 estimate
+  bool restricted = false;    // false: evaluate_orders runs the spectral path on `fallback`
+  double worst_orders = 0;    // the F.10 estimate
   double expected_nodes = 0;  // F.11: BRDF evaluations per pixel the orders would cost, at least, on average
-  double most_nodes = 0;  // F.13: no pixel has more midpoint nodes (over all its candidates), at any (u, v)
-  double lambda0_nm = 0.0;  // observer[i] = xyz_density(lambda0 + i nm), the observer per nm
+  double most_nodes = 0;      // F.13: no pixel has more midpoint nodes (over all its candidates), at any (u, v)
+  double lambda0_nm = 0.0;    // observer[i] = xyz_density(lambda0 + i nm), the observer per nm
   std::vector<glm::dvec3> observer;
   WavelengthSamples fallback;
 };

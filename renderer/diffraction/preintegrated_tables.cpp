@@ -82,7 +82,8 @@ class NodeIntegrator {
   void add(glm::dvec2 uv, const WavelengthShift& s, glm::dvec3 weight, std::vector<glm::dvec3>& T) {
     const int N = t_.N, r = t_.r;
     const glm::dvec2 alpha = s.k * uv;
-    const int jx0 = diffraction_nearest_bin(alpha.x, t_.period_nm), jy0 = diffraction_nearest_bin(alpha.y, t_.period_nm);
+    const int jx0 = diffraction_nearest_bin(alpha.x, t_.period_nm),
+              jy0 = diffraction_nearest_bin(alpha.y, t_.period_nm);
     // The window weight separates: e_j = e_x(j_x) e_y(j_y).
     double ex[kMaxRadius * 2 + 1], ey[kMaxRadius * 2 + 1];
     double sum_x = 0.0, sum_y = 0.0;
@@ -124,8 +125,7 @@ class NodeIntegrator {
     const glm::dvec3 w3 = weight * (s.k * s.k);
     for (int m = 0; m < N; ++m) {
       T[2 * m] += w3 * (d_re_[m] * d_re_[m] + d_im_[m] * d_im_[m]);
-      for (int mp = m + 1; mp < N; ++mp)
-        T[m + mp] += w3 * (2.0 * (d_re_[m] * d_re_[mp] + d_im_[m] * d_im_[mp]));
+      for (int mp = m + 1; mp < N; ++mp) T[m + mp] += w3 * (2.0 * (d_re_[m] * d_re_[mp] + d_im_[m] * d_im_[mp]));
     }
   }
 
@@ -171,9 +171,11 @@ PreintegratedLayout preintegrated_layout(const SpectralTables& tables, const Wav
   const double h = std::sqrt(2.0 * settings.tolerance) / (tables.sigma_nm * k_max);
   PreintegratedLayout l{};
   const glm::dvec2 extent = domain.uv_max - domain.uv_min;
-  const double nodes_u = std::max(2.0, std::ceil(extent.x / h) + 1.0), nodes_v = std::max(2.0, std::ceil(extent.y / h) + 1.0);
+  const double nodes_u = std::max(2.0, std::ceil(extent.x / h) + 1.0),
+               nodes_v = std::max(2.0, std::ceil(extent.y / h) + 1.0);
   l.origin = domain.uv_min;
-  l.spacing = glm::dvec2(extent.x > 0.0 ? extent.x / (nodes_u - 1.0) : h, extent.y > 0.0 ? extent.y / (nodes_v - 1.0) : h);
+  l.spacing =
+      glm::dvec2(extent.x > 0.0 ? extent.x / (nodes_u - 1.0) : h, extent.y > 0.0 ? extent.y / (nodes_v - 1.0) : h);
   l.terms = 2 * tables.N - 1;
   l.amplification = std::exp(k_max * tables.hs_nm * (domain.w_max - domain.w_min));
   // Halves round each coefficient to 2^-11 of itself; the polynomial's terms exceed its value by
@@ -192,8 +194,9 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   const PreintegratedLayout l = preintegrated_layout(tables, samples, domain, settings);
   if (l.bytes > settings.max_buffer_bytes)
     throw Error("preintegrated tables: " + std::to_string(l.nu) + " x " + std::to_string(l.nv) + " (u, v) nodes x " +
-                std::to_string(l.terms) + " terms need " + mib(l.bytes) + ", more than the device's storage-buffer range of " +
-                mib(settings.max_buffer_bytes) + "; narrow the view, raise the tolerance or use --diffraction spectral");
+                std::to_string(l.terms) + " terms need " + mib(l.bytes) +
+                ", more than the device's storage-buffer range of " + mib(settings.max_buffer_bytes) +
+                "; narrow the view, raise the tolerance or use --diffraction spectral");
   PreintegratedTables t;
   t.origin = l.origin;
   t.spacing = l.spacing;
@@ -264,7 +267,8 @@ glm::dvec3 evaluate_preintegrated(const PreintegratedTables& t, const glm::dvec3
   glm::dvec3 acc(0.0);
   const double delta = g.w - t.w_centre;
   for (int p = t.terms - 1; p >= 0; --p)
-    acc = preintegrated_horner_step(acc, delta, cell, corner(0, 0, p), corner(1, 0, p), corner(0, 1, p), corner(1, 1, p));
+    acc =
+        preintegrated_horner_step(acc, delta, cell, corner(0, 0, p), corner(1, 0, p), corner(0, 1, p), corner(1, 1, p));
   return preintegrated_linear_srgb(g, acc, t.sigma_nm, t.R0);
 }
 

@@ -28,7 +28,7 @@ struct PreintegratedDomain {
 PreintegratedDomain domain_of_directions(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs);
 
 struct PreintegrationSettings {
-  double tolerance = 1e-2;  // bilinear-interpolation error relative to the local envelope (eq. F.6)
+  double tolerance = 1e-2;                     // bilinear-interpolation error relative to the local envelope (eq. F.6)
   std::uint64_t max_buffer_bytes = 134217728;  // the device's maxStorageBufferRange (lavapipe: 128 MiB)
 };
 
@@ -38,15 +38,15 @@ struct PreintegratedTables {
   glm::dvec2 spacing{0.0};
   int nu = 0;
   int nv = 0;
-  int terms = 0;  // 2N - 1
-  int words = 0;  // 2: halves, 3: floats
-  double w_centre = 0.0;          // the polynomial is in delta = w - w_centre
-  double floor_lambda_nm = 0.0;   // the wavelength whose resolution 1/(k sigma) floors w, cos_i, cos_r
+  int terms = 0;                 // 2N - 1
+  int words = 0;                 // 2: halves, 3: floats
+  double w_centre = 0.0;         // the polynomial is in delta = w - w_centre
+  double floor_lambda_nm = 0.0;  // the wavelength whose resolution 1/(k sigma) floors w, cos_i, cos_r
   double sigma_nm = 0.0;
   double hs_nm = 0.0;
   double R0 = 0.0;
-  std::vector<float> scale;             // per p: the largest |T_p| (the stored values are T_p / scale)
-  std::vector<std::uint32_t> packed;    // preintegrated_word_index(...) addresses it
+  std::vector<float> scale;           // per p: the largest |T_p| (the stored values are T_p / scale)
+  std::vector<std::uint32_t> packed;  // preintegrated_word_index(...) addresses it
 
   std::uint64_t bytes() const { return packed.size() * sizeof(std::uint32_t); }
 };

@@ -71,8 +71,8 @@ double peak_spacing(const SpectralTables& tables, double lambda_min_nm, double t
 }
 
 WavelengthSamples diffraction_wavelength_samples(const SpectralTables& tables, double tolerance, Illuminant light) {
-  return wavelength_samples(std::min(observer_spacing(tolerance, light), peak_spacing(tables, kCieLambdaMinNm, tolerance)),
-                            light);
+  return wavelength_samples(
+      std::min(observer_spacing(tolerance, light), peak_spacing(tables, kCieLambdaMinNm, tolerance)), light);
 }
 
 glm::dvec3 integrate_xyz(const WavelengthSamples& samples, const std::function<double(double)>& f) {

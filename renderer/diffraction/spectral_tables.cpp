@@ -19,7 +19,8 @@ void validate(const TableRange& range) {
   if (!(range.lambda_min_nm > 0.0 && range.lambda_max_nm >= range.lambda_min_nm))
     throw Error("diffraction tables: need 0 < lambda_min_nm <= lambda_max_nm");
   if (!(range.w_max > 0.0 && range.w_max <= 2.0)) throw Error("diffraction tables: w_max must lie in (0, 2]");
-  if (!(range.tolerance > 0.0 && range.tolerance < 1.0)) throw Error("diffraction tables: tolerance must lie in (0, 1)");
+  if (!(range.tolerance > 0.0 && range.tolerance < 1.0))
+    throw Error("diffraction tables: tolerance must lie in (0, 1)");
   if (range.terms < 0 || range.terms > kMaxTerms)
     throw Error("diffraction tables: terms must lie in [0, " + std::to_string(kMaxTerms) + "]");
 }
@@ -32,8 +33,8 @@ int taylor_term_count(double x_max, double tolerance) {
     term *= x_max / N;
     if (term <= tolerance) return N;
   }
-  throw Error("diffraction tables: k w h = " + std::to_string(x_max) + " needs more than " +
-              std::to_string(kMaxTerms) + " Taylor terms; use a larger tolerance or a lower grating");
+  throw Error("diffraction tables: k w h = " + std::to_string(x_max) + " needs more than " + std::to_string(kMaxTerms) +
+              " Taylor terms; use a larger tolerance or a lower grating");
 }
 
 int window_radius(double period_nm, double sigma_nm, double tolerance) {

@@ -10,9 +10,9 @@
 namespace facet::frames {
 
 struct FrameFile {
-  std::filesystem::path path;  // must end in .exr
+  std::filesystem::path path;       // must end in .exr
   std::string pixel_type = "half";  // "half" or "float"
-  double exposure = 0.0;  // of the preview, in stops
+  double exposure = 0.0;            // of the preview, in stops
   bool preview = true;
 };
 

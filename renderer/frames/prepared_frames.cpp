@@ -78,8 +78,8 @@ Image PreparedFrames::render_reference(const Camera& camera, int width, int heig
 
 ExrMetadata PreparedFrames::metadata() const {
   if (const auto* method = std::get_if<gpu::RenderMethod>(&method_)) {
-    ExrMetadata metadata = frame_metadata(*scene_, method->name(),
-                                          method->samples_per_axis * method->samples_per_axis, context_->info().name);
+    ExrMetadata metadata = frame_metadata(*scene_, method->name(), method->samples_per_axis * method->samples_per_axis,
+                                          context_->info().name);
     add_diffraction_metadata(metadata, pass_->diffraction());
     return metadata;
   }

@@ -24,8 +24,8 @@ namespace facet::frames {
 using FrameProgress = std::function<void(std::int64_t done, std::int64_t total)>;
 
 struct FrameRequest {
-  int frame = -1;        // the camera_path frame the camera shows, recorded as facet:frame; -1: the still camera
-  bool timings = true;   // false: no facet:gpu_ms / facet:render_ms, so equal inputs give equal bytes (batch)
+  int frame = -1;       // the camera_path frame the camera shows, recorded as facet:frame; -1: the still camera
+  bool timings = true;  // false: no facet:gpu_ms / facet:render_ms, so equal inputs give equal bytes (batch)
   std::optional<std::chrono::steady_clock::time_point> since;  // start of facet:render_ms; default: the call
   FrameProgress progress;
   const std::atomic<bool>* cancel = nullptr;  // stops a reference frame between tiles (it then throws)
@@ -34,7 +34,7 @@ struct FrameRequest {
 struct Frame {
   Image image;
   ExrMetadata metadata;
-  double gpu_ms = 0.0;  // the device time; 0 for the CPU reference
+  double gpu_ms = 0.0;   // the device time; 0 for the CPU reference
   double wall_ms = 0.0;  // since FrameRequest::since
 };
 

@@ -31,8 +31,8 @@ std::vector<Camera> scene_cameras(const Scene& scene) {
 }
 
 // The lit pair of the ray from `origin` along `d` on `plane`, if it hits.
-std::optional<Pair> plane_pair(const Scene& scene, const Plane& plane, const PlaneFrame& frame, const glm::dvec3& origin,
-                               const glm::dvec3& d) {
+std::optional<Pair> plane_pair(const Scene& scene, const Plane& plane, const PlaneFrame& frame,
+                               const glm::dvec3& origin, const glm::dvec3& d) {
   const double facing = glm::dot(d, frame.normal);
   if (facing == 0.0) return std::nullopt;
   const double t = glm::dot(plane.point - origin, frame.normal) / facing;
@@ -52,8 +52,10 @@ glm::dvec3 uvw(const Pair& p) { return -(p.first + p.second); }
 }  // namespace
 
 diffraction::PreintegratedDomain diffraction_view_domain(const Scene& scene, uint32_t material) {
-  const bool curved = std::any_of(scene.spheres.begin(), scene.spheres.end(), [&](const Sphere& s) { return s.material == material; }) ||
-                      std::any_of(scene.meshes.begin(), scene.meshes.end(), [&](const Mesh& m) { return m.material == material; });
+  const bool curved =
+      std::any_of(scene.spheres.begin(), scene.spheres.end(),
+                  [&](const Sphere& s) { return s.material == material; }) ||
+      std::any_of(scene.meshes.begin(), scene.meshes.end(), [&](const Mesh& m) { return m.material == material; });
   if (curved) return {glm::dvec2(-2.0), glm::dvec2(2.0), -2.0, 0.0};
   std::vector<Pair> pairs;
   double step = 0.0;  // largest |(u, v, w)| change between neighbouring film samples
@@ -66,7 +68,8 @@ diffraction::PreintegratedDomain diffraction_view_domain(const Scene& scene, uin
       for (int iy = 0; iy < kFilmSamples; ++iy)
         for (int ix = 0; ix < kFilmSamples; ++ix) {
           const glm::dvec2 ndc = glm::dvec2(ix, iy) * (2.0 / (kFilmSamples - 1)) - 1.0;
-          grid.push_back(plane_pair(scene, plane, frame, c.origin, glm::normalize(c.forward + ndc.x * c.right - ndc.y * c.up)));
+          grid.push_back(
+              plane_pair(scene, plane, frame, c.origin, glm::normalize(c.forward + ndc.x * c.right - ndc.y * c.up)));
         }
       for (int iy = 0; iy < kFilmSamples; ++iy)
         for (int ix = 0; ix < kFilmSamples; ++ix) {
@@ -74,9 +77,11 @@ diffraction::PreintegratedDomain diffraction_view_domain(const Scene& scene, uin
           if (!here) continue;
           pairs.push_back(*here);
           if (ix + 1 < kFilmSamples && grid[static_cast<size_t>(iy) * kFilmSamples + ix + 1])
-            step = std::max(step, glm::length(uvw(*grid[static_cast<size_t>(iy) * kFilmSamples + ix + 1]) - uvw(*here)));
+            step =
+                std::max(step, glm::length(uvw(*grid[static_cast<size_t>(iy) * kFilmSamples + ix + 1]) - uvw(*here)));
           if (iy + 1 < kFilmSamples && grid[static_cast<size_t>(iy + 1) * kFilmSamples + ix])
-            step = std::max(step, glm::length(uvw(*grid[static_cast<size_t>(iy + 1) * kFilmSamples + ix]) - uvw(*here)));
+            step =
+                std::max(step, glm::length(uvw(*grid[static_cast<size_t>(iy + 1) * kFilmSamples + ix]) - uvw(*here)));
         }
     }
   }

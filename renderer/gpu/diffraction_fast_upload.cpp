@@ -21,8 +21,8 @@ DiffractionMethod scene_diffraction_method(const Scene& scene, const diffraction
     if (!m) continue;
     if (chosen && *chosen != m->method)
       throw Error(std::string("the scene's diffraction materials ask for different methods (") +
-                  diffraction::diffraction_method_name(*chosen) + ", " + diffraction::diffraction_method_name(m->method) +
-                  "); pick one for all with --diffraction");
+                  diffraction::diffraction_method_name(*chosen) + ", " +
+                  diffraction::diffraction_method_name(m->method) + "); pick one for all with --diffraction");
     chosen = m->method;
   }
   return chosen.value_or(DiffractionMethod::Spectral);
@@ -61,7 +61,8 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
     if (iterations + kTraceLoopReserve > kLoopIterationLimit)
       throw Error("diffraction material '" + scene.material_names[scene_material] + "': the orders path may need " +
                   std::to_string(iterations) + " shader loop iterations per ray; lavapipe ends a pixel's loops after " +
-                  std::to_string(kLoopIterationLimit) + ": use --diffraction spectral or preintegrated, or a larger tolerance");
+                  std::to_string(kLoopIterationLimit) +
+                  ": use --diffraction spectral or preintegrated, or a larger tolerance");
     const auto& L = plan.lattice;
     material.order_lattice0 = glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach);
     material.order_lattice1 = glm::vec4(L.k_min, L.k_max, L.peak_step, L.max_step);

@@ -22,7 +22,8 @@ constexpr double kPreintegrationTolerance = 1e-2;
 // The method every diffraction material of the scene is rendered with: settings.method, else the
 // materials' own "method". Throws facet::Error when the materials ask for different ones (the
 // pass compiles one method in; `--diffraction` picks one for all). Spectral without diffraction.
-diffraction::DiffractionMethod scene_diffraction_method(const Scene& scene, const diffraction::DiffractionSettings& settings);
+diffraction::DiffractionMethod scene_diffraction_method(const Scene& scene,
+                                                        const diffraction::DiffractionSettings& settings);
 
 struct FastPathData {
   std::vector<std::uint32_t> preintegrated_words;

@@ -28,8 +28,8 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
 long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables) {
   const auto& L = plan.lattice;
   const glm::dvec2 radius = glm::floor(glm::dvec2(L.reach) / L.frequency + 0.5);  // diffraction_order_share's
-  const long share = static_cast<long>((2 * radius.y + 1) * (2 * radius.x + 2));   // rows, each with its columns
-  const glm::ivec2 bins = 2 * tables.r / L.repeats + 1;                             // lattice bins per axis, at most
+  const long share = static_cast<long>((2 * radius.y + 1) * (2 * radius.x + 2));  // rows, each with its columns
+  const glm::ivec2 bins = 2 * tables.r / L.repeats + 1;                           // lattice bins per axis, at most
   const long per_node = 2 + share + static_cast<long>(bins.x) * bins.y * bin_loop_iterations(tables);
   return static_cast<long>(std::ceil(plan.worst_orders) + std::ceil(plan.most_nodes) * per_node);
 }
@@ -47,14 +47,13 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
     const auto& prepared = all[i];
     if (!prepared) continue;
     const long iterations = diffraction_loop_iterations(*prepared);
-    if (method != diffraction::DiffractionMethod::Preintegrated &&
-        iterations + kTraceLoopReserve > kLoopIterationLimit)
-      throw Error("diffraction material '" + scene.material_names[i] + "': " +
-                  std::to_string(prepared->samples.lambda_nm.size()) + " wavelengths x " +
+    if (method != diffraction::DiffractionMethod::Preintegrated && iterations + kTraceLoopReserve > kLoopIterationLimit)
+      throw Error("diffraction material '" + scene.material_names[i] +
+                  "': " + std::to_string(prepared->samples.lambda_nm.size()) + " wavelengths x " +
                   std::to_string((2 * prepared->tables.r + 1) * (2 * prepared->tables.r + 1)) + " bins x " +
                   std::to_string(prepared->tables.N) + " Taylor terms need " + std::to_string(iterations) +
-                  " shader loop iterations per ray; lavapipe ends a pixel's loops after " + std::to_string(kLoopIterationLimit) +
-                  ": raise the tolerance or use fewer wavelengths");
+                  " shader loop iterations per ray; lavapipe ends a pixel's loops after " +
+                  std::to_string(kLoopIterationLimit) + ": raise the tolerance or use fewer wavelengths");
     const std::vector<glm::vec2> table = prepared->tables.coefficients_f32();
     const diffraction::WavelengthSamples& s = prepared->samples;
     GpuDiffractionMaterial entry{};  // the fast paths' fields stay zero unless their method fills them
@@ -71,8 +70,9 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
   }
   const uint64_t bytes = coefficients.size() * sizeof(glm::vec2);
   if (bytes > context.limits().maxStorageBufferRange)
-    throw Error("the diffraction tables of this scene (" + std::to_string(bytes >> 20) +
-                " MiB) exceed the device's storage buffer range; use gratings with fewer samples or a larger tolerance");
+    throw Error(
+        "the diffraction tables of this scene (" + std::to_string(bytes >> 20) +
+        " MiB) exceed the device's storage buffer range; use gratings with fewer samples or a larger tolerance");
   // Placeholders where a method has no data (a buffer cannot be empty).
   if (fast.preintegrated_words.empty()) fast.preintegrated_words.push_back(0);
   if (fast.preintegrated_scales.empty()) fast.preintegrated_scales.push_back(0.0f);

@@ -14,9 +14,9 @@
 namespace facet::gpu {
 
 struct DiffractionBuffers {
-  vk::Buffer coefficients;  // vec2: the tables of all materials, one after another
-  vk::Buffer materials;     // GpuDiffractionMaterial, in the order of the scene's diffraction materials
-  vk::Buffer wavelengths;   // vec4 (lambda nm, XYZ weight)
+  vk::Buffer coefficients;          // vec2: the tables of all materials, one after another
+  vk::Buffer materials;             // GpuDiffractionMaterial, in the order of the scene's diffraction materials
+  vk::Buffer wavelengths;           // vec4 (lambda nm, XYZ weight)
   vk::Buffer preintegrated_words;   // uint: `preintegrated` tables (gpu/diffraction_fast_upload.hpp)
   vk::Buffer preintegrated_scales;  // float: their per-term scales
   vk::Buffer observer;              // vec4: the `orders` observer tables, XYZ per nm
@@ -42,9 +42,9 @@ long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diff
 // Diffraction material i of the scene (counting only diffraction materials, in scene order) is
 // entry i of `materials`: the index scene_upload puts in GpuMaterial::kind.y. Throws facet::Error
 // if the tables exceed the device's storage-buffer range, or if one ray of a material would exceed
-// the loop limit above (spectral and orders; ss:K runs one ray per invocation and dispatch), or if the materials ask for different
-// methods (gpu/diffraction_fast_upload.hpp). A scene without diffraction gets one-element placeholders (the
-// pass binds them, its shader never reads them).
+// the loop limit above (spectral and orders; ss:K runs one ray per invocation and dispatch), or if the materials ask
+// for different methods (gpu/diffraction_fast_upload.hpp). A scene without diffraction gets one-element placeholders
+// (the pass binds them, its shader never reads them).
 DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
                                       const diffraction::DiffractionSettings& settings = {});
 

@@ -49,14 +49,16 @@ void check_height_field_tracing(const Scene& scene, const RenderMethod& method) 
     if (!m || !plane.size) continue;
     const HeightFieldTraceCost cost = heightfield_trace_cost(*m, *plane.size);
     if (cost.levels > 21)
-      throw Error("microsurface '" + scene.material_names[plane.material] + "': its rectangle spans too many tiles of " +
-                  "its field for the GPU tracer's quadtree (" + std::to_string(cost.levels) + " levels > 21)");
+      throw Error("microsurface '" + scene.material_names[plane.material] +
+                  "': its rectangle spans too many tiles of " + "its field for the GPU tracer's quadtree (" +
+                  std::to_string(cost.levels) + " levels > 21)");
     nodes += cost.nodes;
   }
   if (nodes > FACET_HEIGHTFIELD_MAX_STEPS)
     throw Error("the microsurfaces' height fields span too many texels for the GPU tracer: a ray may visit " +
                 std::to_string(nodes) + " quadtree nodes, more than its loop bound of " +
-                std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) + " (use coarser texels, a smaller rectangle or --method mip)");
+                std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) +
+                " (use coarser texels, a smaller rectangle or --method mip)");
 }
 
 // The specialization constants of the pass by their names in the shaders: what the scene uses, how
@@ -85,8 +87,9 @@ int tile_count(int width, int height, int tile_size) {
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size)
     : scene_(&scene),
-      tile_size_(tile_size > 0 && tile_size <= kMaxTileSize ? tile_size
-                                                             : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
+      tile_size_(tile_size > 0 && tile_size <= kMaxTileSize
+                     ? tile_size
+                     : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
       samples_per_axis_(method.samples_per_axis),
       buffers_(upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable)),
       diffraction_(upload_diffraction(context, scene, method.diffraction)),

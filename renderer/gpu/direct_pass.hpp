@@ -59,7 +59,6 @@ class DirectPass {
 
 // One frame from the scene's own camera: DirectPass(context, scene, method, tile_size).render(...).
 Image render_direct(vk::Context& context, const Scene& scene, int width, int height, const RenderMethod& method = {},
-                    RenderStats* stats = nullptr, const TileProgress& progress = {},
-                    int tile_size = kDefaultTileSize);
+                    RenderStats* stats = nullptr, const TileProgress& progress = {}, int tile_size = kDefaultTileSize);
 
 }  // namespace facet::gpu

@@ -88,12 +88,15 @@ void append_dilated_bounds(TextureData& data, uint bounds, uint count) {
 void append_corner_heights(TextureData& data, uint vertex_level, uint count) {
   const uvec4 info = data.levels[vertex_level].info;
   const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
-  const auto z = [&](int i, int j) -> double { return data.texels[info.x + static_cast<size_t>(j % h) * w + (i % w)].x; };
+  const auto z = [&](int i, int j) -> double {
+    return data.texels[info.x + static_cast<size_t>(j % h) * w + (i % w)].x;
+  };
   const std::vector<glm::uvec2> sizes = mip_chain_sizes(w, h);
   // Per node of the current level: the sum of its cells' mean heights and its cell count.
   std::vector<double> sum(static_cast<size_t>(w) * h), cells(sum.size(), 1.0);
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) sum[static_cast<size_t>(j) * w + i] = 0.25 * (z(i, j) + z(i + 1, j) + z(i, j + 1) + z(i + 1, j + 1));
+    for (int i = 0; i < w; ++i)
+      sum[static_cast<size_t>(j) * w + i] = 0.25 * (z(i, j) + z(i + 1, j) + z(i, j + 1) + z(i + 1, j + 1));
   for (uint l = 1; l < count; ++l) {
     const int fw = static_cast<int>(sizes[l - 1].x), fh = static_cast<int>(sizes[l - 1].y);
     const int lw = static_cast<int>(sizes[l].x), lh = static_cast<int>(sizes[l].y);
@@ -124,10 +127,14 @@ void append_corner_heights(TextureData& data, uint vertex_level, uint count) {
 
 HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material, glm::dvec2 patch_size) {
   const std::int64_t w = material.heights->width, h = material.heights->height;
-  const std::int64_t tiles_x = static_cast<std::int64_t>(std::ceil(patch_size.x / (static_cast<double>(w) * material.texel_size)));
-  const std::int64_t tiles_y = static_cast<std::int64_t>(std::ceil(patch_size.y / (static_cast<double>(h) * material.texel_size)));
+  const std::int64_t tiles_x =
+      static_cast<std::int64_t>(std::ceil(patch_size.x / (static_cast<double>(w) * material.texel_size)));
+  const std::int64_t tiles_y =
+      static_cast<std::int64_t>(std::ceil(patch_size.y / (static_cast<double>(h) * material.texel_size)));
   HeightFieldTraceCost cost;
-  const auto ceil_log2 = [](std::int64_t n) { return static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n - 1))); };  // n >= 1
+  const auto ceil_log2 = [](std::int64_t n) {
+    return static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n - 1)));
+  };  // n >= 1
   cost.levels = ceil_log2(std::max(w, h)) + ceil_log2(std::max(tiles_x, tiles_y));
   // A line crosses at most C - 1 column and R - 1 row boundaries of a C x R grid of nodes, and each
   // crossing adds at most 1.5 nodes whose closed boxes it touches (3 at a corner): < 2 (C + R) per level.
@@ -152,7 +159,8 @@ MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, dou
   for (int j = 0; j < field.height; ++j)
     for (int i = 0; i < field.width; ++i) {
       const double z00 = scale * field.at(i, j) - z_offset, z10 = scale * field.wrapped(i + 1, j) - z_offset;
-      const double z01 = scale * field.wrapped(i, j + 1) - z_offset, z11 = scale * field.wrapped(i + 1, j + 1) - z_offset;
+      const double z01 = scale * field.wrapped(i, j + 1) - z_offset,
+                   z11 = scale * field.wrapped(i + 1, j + 1) - z_offset;
       const Patch p{z00, z10 - z00, z01 - z00, z00 - z10 - z01 + z11};
       double z2 = 0.0;
       for (double u : g)
@@ -189,7 +197,8 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
 
   const uint first = static_cast<uint>(data.levels.size());
   data.levels.push_back({uvec4(data.texels.size(), field.width, field.height, 0)});
-  for (double h : field.values) data.texels.push_back(vec4(static_cast<float>(material.height_scale * h - z_offset), 0, 0, 0));
+  for (double h : field.values)
+    data.texels.push_back(vec4(static_cast<float>(material.height_scale * h - z_offset), 0, 0, 0));
   const MicrosurfaceLevel0 level0 = microsurface_level0(material, z_offset);
   append_mip_chain(data, field.width, field.height, level0.moments);
   append_mip_chain(data, field.width, field.height, level0.slopes);

@@ -26,10 +26,13 @@ RenderMethod RenderMethod::parse(const std::string& text) {
     const std::string count = text.substr(3);
     char* end = nullptr;
     const long k = std::strtol(count.c_str(), &end, 10);
-    if (!count.empty() && *end == '\0' && k >= 1 && k <= kMaxSamplesPerAxis) return {Texture::Naive, static_cast<int>(k)};
-    throw Error("--method " + text + ": K of ss:K must be an integer in [1, " + std::to_string(kMaxSamplesPerAxis) + "]");
+    if (!count.empty() && *end == '\0' && k >= 1 && k <= kMaxSamplesPerAxis)
+      return {Texture::Naive, static_cast<int>(k)};
+    throw Error("--method " + text + ": K of ss:K must be an integer in [1, " + std::to_string(kMaxSamplesPerAxis) +
+                "]");
   }
-  throw Error("--method " + text + ": must be one of naive, mip, colormip, ss:K, filtered, filtered:table, "
+  throw Error("--method " + text +
+              ": must be one of naive, mip, colormip, ss:K, filtered, filtered:table, "
               "diffraction:spectral, diffraction:preintegrated, diffraction:orders");
 }
 
@@ -39,10 +42,14 @@ std::string RenderMethod::name() const {
   if (samples_per_axis > 1 || texture == Texture::Naive)
     return samples_per_axis > 1 ? "ss:" + std::to_string(samples_per_axis) : "naive";
   switch (texture) {
-    case Texture::Mip: return "mip";
-    case Texture::Colormip: return "colormip";
-    case Texture::FilteredTable: return "filtered:table";
-    default: return "filtered";
+    case Texture::Mip:
+      return "mip";
+    case Texture::Colormip:
+      return "colormip";
+    case Texture::FilteredTable:
+      return "filtered:table";
+    default:
+      return "filtered";
   }
 }
 

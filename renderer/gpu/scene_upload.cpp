@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "scene/bvh.hpp"
 #include "gpu/microsurface_upload.hpp"
 #include "gpu/render_layout.hpp"
 #include "gpu/texture_upload.hpp"
+#include "scene/bvh.hpp"
 #include "scene/camera_frame.hpp"
 #include "scene/plane_frame.hpp"
 

@@ -58,8 +58,8 @@ precompute::PrefilteredColormap build_colormap_table(const ColormapTextureMateri
 GpuColormap append_colormap_points(TextureData& data, const Colormap& map) {
   const GpuColormap record{uvec4(data.colormap_points.size(), map.positions().size(),
                                  map.interpolation() == Colormap::Interpolation::Steps ? 1 : 0, 0),
-                           vec4(static_cast<float>(map.domain().x), static_cast<float>(map.domain().y), 0, 0),
-                           uvec4(0), vec4(0)};
+                           vec4(static_cast<float>(map.domain().x), static_cast<float>(map.domain().y), 0, 0), uvec4(0),
+                           vec4(0)};
   for (size_t i = 0; i < map.positions().size(); ++i)
     data.colormap_points.push_back(vec4(glm::vec3(map.colours()[i]), static_cast<float>(map.positions()[i])));
   return record;
@@ -72,9 +72,9 @@ uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& mat
     const glm::dvec3 c = material.colormap.at(field.values[i]);
     for (int k = 0; k < 3; ++k) colours[3 * i + k] = c[k];
   }
-  const uint first_moment = append_mip_chain(
-      data, field.width, field.height,
-      to_vec4_texels(precompute::scalar_moment_level0(field), precompute::kScalarChannels));
+  const uint first_moment =
+      append_mip_chain(data, field.width, field.height,
+                       to_vec4_texels(precompute::scalar_moment_level0(field), precompute::kScalarChannels));
   const uint moment_levels = static_cast<uint>(data.levels.size()) - first_moment;
   const uint first_colour = append_mip_chain(data, field.width, field.height, to_vec4_texels(colours, 3));
 
@@ -84,7 +84,8 @@ uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& mat
     const precompute::PrefilteredColormap table = build_colormap_table(material);
     const kernels::f32::ColormapTableGrid grid = table.grid_f32();
     gpu_map.table = uvec4(data.texels.size(), grid.mu_count, grid.sigma_count, 0);
-    gpu_map.table_range = vec4(grid.mu_min, grid.mu_max, grid.sigma_max, static_cast<float>(colormap_table_sigma_floor(map)));
+    gpu_map.table_range =
+        vec4(grid.mu_min, grid.mu_max, grid.sigma_max, static_cast<float>(colormap_table_sigma_floor(map)));
     const std::vector<glm::vec4> rgba = table.rgba_f32();
     data.texels.insert(data.texels.end(), rgba.begin(), rgba.end());
   }

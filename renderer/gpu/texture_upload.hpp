@@ -20,7 +20,7 @@ struct TextureData {
   std::vector<GpuTextureLevel> levels;
   std::vector<vec4> texels;
   std::vector<GpuColormap> colormaps;
-  std::vector<vec4> colormap_points;  // linear rgb, position
+  std::vector<vec4> colormap_points;   // linear rgb, position
   std::vector<glm::uvec2> gpu_chains;  // first level record, level count: filled by build_gpu_mips
 };
 

@@ -8,8 +8,8 @@
 namespace facet {
 
 // Creates the destination's missing parent folders, calls `write` on a temporary file in its directory,
-// flushes it to disk and renames it over `destination`. If anything fails (including `write` throwing) the temporary is removed, the
-// destination is left as it was, and a facet::Error naming `destination` is thrown.
+// flushes it to disk and renames it over `destination`. If anything fails (including `write` throwing) the temporary is
+// removed, the destination is left as it was, and a facet::Error naming `destination` is thrown.
 void write_file_atomically(const std::filesystem::path& destination, const std::function<void(std::FILE*)>& write);
 
 }  // namespace facet

@@ -21,9 +21,12 @@ ImageComparison compare_images(const Image& test, const Image& reference) {
 }
 
 std::vector<std::pair<std::string, double>> named_metrics(const ImageComparison& c) {
-  return {{"rmse", c.rmse},   {"rel_mse", c.rel_mse},
-          {"psnr", c.psnr},   {"max_abs", c.max_abs},
-          {"ssim", c.ssim.value_or(std::nan(""))}, {"flip", c.flip}};
+  return {{"rmse", c.rmse},
+          {"rel_mse", c.rel_mse},
+          {"psnr", c.psnr},
+          {"max_abs", c.max_abs},
+          {"ssim", c.ssim.value_or(std::nan(""))},
+          {"flip", c.flip}};
 }
 
 nlohmann::json to_json(const ImageComparison& c) {

@@ -16,9 +16,9 @@ namespace facet {
 struct ImageComparison {
   double rmse = 0.0;
   double rel_mse = 0.0;
-  double psnr = 0.0;            // dB; +inf for identical images
+  double psnr = 0.0;  // dB; +inf for identical images
   double max_abs = 0.0;
-  std::optional<double> ssim;   // undefined for images smaller than the SSIM window
+  std::optional<double> ssim;  // undefined for images smaller than the SSIM window
   double flip = 0.0;
 };
 

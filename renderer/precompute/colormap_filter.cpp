@@ -29,7 +29,8 @@ Vec3 sum_segments(const Colormap& map, Real mu_t, Real sigma_t) {
   const std::size_t first = static_cast<std::size_t>(
       std::lower_bound(x.begin() + 1, x.end(), static_cast<double>(mu_t) - reach) - (x.begin() + 1));
   const std::size_t end = std::min<std::size_t>(
-      last, static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), static_cast<double>(mu_t) + reach) - x.begin()));
+      last,
+      static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), static_cast<double>(mu_t) + reach) - x.begin()));
   if (first >= end) return sum;
   Real a = z(first);
   auto knot_a = K::colormap_knot(a);
@@ -46,18 +47,24 @@ Vec3 sum_segments(const Colormap& map, Real mu_t, Real sigma_t) {
 // The kernel namespaces as template arguments.
 struct F64 {
   using ColormapKnot = kernels::f64::ColormapKnot;
-  static double colormap_standardize(double x, double mu, double sigma) { return kernels::f64::colormap_standardize(x, mu, sigma); }
+  static double colormap_standardize(double x, double mu, double sigma) {
+    return kernels::f64::colormap_standardize(x, mu, sigma);
+  }
   static ColormapKnot colormap_knot(double z) { return kernels::f64::colormap_knot(z); }
-  static glm::dvec3 colormap_segment_from_knots(ColormapKnot k0, ColormapKnot k1, double a, double b, glm::dvec3 c0, glm::dvec3 c1) {
+  static glm::dvec3 colormap_segment_from_knots(ColormapKnot k0, ColormapKnot k1, double a, double b, glm::dvec3 c0,
+                                                glm::dvec3 c1) {
     return kernels::f64::colormap_segment_from_knots(k0, k1, a, b, c0, c1);
   }
 };
 
 struct F32 {
   using ColormapKnot = kernels::f32::ColormapKnot;
-  static float colormap_standardize(float x, float mu, float sigma) { return kernels::f32::colormap_standardize(x, mu, sigma); }
+  static float colormap_standardize(float x, float mu, float sigma) {
+    return kernels::f32::colormap_standardize(x, mu, sigma);
+  }
   static ColormapKnot colormap_knot(float z) { return kernels::f32::colormap_knot(z); }
-  static glm::vec3 colormap_segment_from_knots(ColormapKnot k0, ColormapKnot k1, float a, float b, glm::vec3 c0, glm::vec3 c1) {
+  static glm::vec3 colormap_segment_from_knots(ColormapKnot k0, ColormapKnot k1, float a, float b, glm::vec3 c0,
+                                               glm::vec3 c1) {
     return kernels::f32::colormap_segment_from_knots(k0, k1, a, b, c0, c1);
   }
 };

@@ -43,8 +43,7 @@ double within_texel_variance(const assets::ScalarField& f, int x, int y) {
 }  // namespace
 
 MomentMips build_moment_mips(int width, int height, int channels, std::vector<double> level0) {
-  if (width < 1 || height < 1 || channels < 1 ||
-      level0.size() != static_cast<std::size_t>(width) * height * channels)
+  if (width < 1 || height < 1 || channels < 1 || level0.size() != static_cast<std::size_t>(width) * height * channels)
     throw Error("moment MIP maps: level 0 must hold width * height * channels values");
   MomentMips mips{channels, {{width, height, 0}}, std::move(level0)};
   for (int span = 1; mips.levels.back().width > 1 || mips.levels.back().height > 1; span *= 2) {

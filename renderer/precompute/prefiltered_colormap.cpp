@@ -44,7 +44,8 @@ Probed probe(const Colormap& map, const PrefilteredColormap& table, double sigma
       };
       if (i + 1 < g.mu_count) p.error_mu = std::max(p.error_mu, error(mu_mid, sigma));
       if (j + 1 < g.sigma_count) p.error_sigma = std::max(p.error_sigma, error(mu, sigma_mid));
-      if (i + 1 < g.mu_count && j + 1 < g.sigma_count) p.error_centre = std::max(p.error_centre, error(mu_mid, sigma_mid));
+      if (i + 1 < g.mu_count && j + 1 < g.sigma_count)
+        p.error_centre = std::max(p.error_centre, error(mu_mid, sigma_mid));
     }
   });
   Probed all;
@@ -57,7 +58,8 @@ Probed probe(const Colormap& map, const PrefilteredColormap& table, double sigma
 }
 
 PrefilteredColormap tabulate(const Colormap& map, k64::ColormapTableGrid grid) {
-  PrefilteredColormap table{grid, std::vector<glm::dvec3>(static_cast<std::size_t>(grid.mu_count) * grid.sigma_count), 0.0};
+  PrefilteredColormap table{grid, std::vector<glm::dvec3>(static_cast<std::size_t>(grid.mu_count) * grid.sigma_count),
+                            0.0};
   tbb::parallel_for(0, grid.sigma_count, [&](int j) {
     for (int i = 0; i < grid.mu_count; ++i)
       table.values[k64::colormap_table_index(grid, i, j)] =

@@ -12,7 +12,7 @@
 namespace facet::report {
 
 struct BenchRecord {
-  std::string scene;       // short name (the file's stem), also the scene's output folder
+  std::string scene;  // short name (the file's stem), also the scene's output folder
   std::string scene_file;
   std::string method;
   int width = 0, height = 0;
@@ -21,7 +21,7 @@ struct BenchRecord {
   Timing timing;
   double prepare_ms = 0.0;  // wall time of preparing the method and rendering its first (warm-up) frame
   ImageComparison comparison;
-  std::string image, heatmap;        // PNG paths relative to the output folder
+  std::string image, heatmap;  // PNG paths relative to the output folder
 
   bool ok() const { return !error.has_value(); }
   double time_ms() const { return timing.headline().median; }

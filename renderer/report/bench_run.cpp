@@ -47,8 +47,7 @@ std::string unique_name(const std::filesystem::path& file, std::set<std::string>
 // Overrides first; a side not given follows the scene's aspect. Quick runs default to 160 px wide.
 std::pair<int, int> resolution(const BenchOptions& options, const Camera& camera) {
   const bool quick_width = options.quick && options.width <= 0 && options.height <= 0;
-  return frames::frame_size(camera, quick_width ? std::min(kQuickWidth, camera.width) : options.width,
-                            options.height);
+  return frames::frame_size(camera, quick_width ? std::min(kQuickWidth, camera.width) : options.width, options.height);
 }
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
@@ -90,8 +89,8 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
   return record;
 }
 
-void run_scene(vk::Context& context, const BenchOptions& options, const std::filesystem::path& cache_dir,
-               SceneRun& run, BenchRun& bench) {
+void run_scene(vk::Context& context, const BenchOptions& options, const std::filesystem::path& cache_dir, SceneRun& run,
+               BenchRun& bench) {
   BenchRecord base;
   base.scene = run.name;
   base.scene_file = run.scene_file;
@@ -104,15 +103,16 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
     scene = load_scene(run.scene_file);
     std::tie(run.width, run.height) = resolution(options, scene.camera);
     std::unique_ptr<ProgressBar> bar;
-    frames::PreparedFrames reference_frames(scene, frames::ReferenceMethod{bench.grid, static_cast<std::int64_t>(bench.seed), 0},
-                                            nullptr);
+    frames::PreparedFrames reference_frames(
+        scene, frames::ReferenceMethod{bench.grid, static_cast<std::int64_t>(bench.seed), 0}, nullptr);
     frames::FrameRequest request;
     request.progress = [&](std::int64_t done, std::int64_t total) {
       if (!bar) bar = std::make_unique<ProgressBar>("reference " + run.name, total);
       bar->update(done);
     };
-    reference = cached_reference(cache_dir, {run.scene_file, bench.facet_version, run.width, run.height, bench.grid, bench.seed},
-                                 [&] { return reference_frames.render(scene.camera, run.width, run.height, request).image; });
+    reference = cached_reference(
+        cache_dir, {run.scene_file, bench.facet_version, run.width, run.height, bench.grid, bench.seed},
+        [&] { return reference_frames.render(scene.camera, run.width, run.height, request).image; });
     if (bar) bar->finish();
     std::filesystem::create_directories(options.out_dir / run.name);
     run.reference_image = run.name + "/reference.png";
@@ -146,14 +146,15 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   }
   progress.finish();
   run.plot = run.name + "/speed_error.svg";
-  write_text(options.out_dir / run.plot,
-             speed_error_svg(points, {run.name + ": speed vs error", "time per frame (ms, median)", "RMSE vs reference"}));
+  write_text(options.out_dir / run.plot, speed_error_svg(points, {run.name + ": speed vs error",
+                                                                  "time per frame (ms, median)", "RMSE vs reference"}));
 }
 
 }  // namespace
 
 int BenchRun::exit_status() const {
-  const bool scene_failed = std::any_of(scenes.begin(), scenes.end(), [](const SceneRun& s) { return s.error.has_value(); });
+  const bool scene_failed =
+      std::any_of(scenes.begin(), scenes.end(), [](const SceneRun& s) { return s.error.has_value(); });
   const bool any_ok = std::any_of(records.begin(), records.end(), [](const BenchRecord& r) { return r.ok(); });
   return scene_failed || !any_ok ? 1 : 0;
 }

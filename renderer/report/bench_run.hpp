@@ -23,7 +23,7 @@ struct BenchOptions {
   int grid = 0;                     // reference N x N; 0: 8 quick, 32 full
   int repeats = 0;                  // timed runs per method; 0: 2 quick, 5 full
   std::uint64_t seed = 1;
-  std::vector<std::string> methods; // empty: the catalogue's applicable ones
+  std::vector<std::string> methods;  // empty: the catalogue's applicable ones
   bool kernel_stability = true;
   std::string facet_version;
   vk::ContextOptions device;

@@ -103,12 +103,14 @@ StabilityRow cross_section_row(vk::Context& context, int ndf, const char* name) 
   const auto outputs = gpu::run_batch_eval(context, "eval_cross_section", eval_cross_section_spv, inputs);
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const double got = outputs[i].a.x;
-    worst_gpu = std::max(worst_gpu, std::isfinite(got) ? std::fabs(got - exact[i]) / std::max(1.0, std::fabs(exact[i])) : 1e300);
+    worst_gpu = std::max(worst_gpu,
+                         std::isfinite(got) ? std::fabs(got - exact[i]) / std::max(1.0, std::fabs(exact[i])) : 1e300);
   }
-  StabilityRow row = describe(std::string("ndf_sigma_u (") + name + ")",
-                              ndf == 2 ? "b in [1e-6, 1-1e-6], u in [-1, 1]" : "alpha in [1e-3, 1e3], u in [-1, 1]",
-                              ndf == 3 ? "adaptive quadrature in double" : "closed form in double (the f64 twin itself)",
-                              "|error| / max(1, sigma)");
+  StabilityRow row =
+      describe(std::string("ndf_sigma_u (") + name + ")",
+               ndf == 2 ? "b in [1e-6, 1-1e-6], u in [-1, 1]" : "alpha in [1e-3, 1e3], u in [-1, 1]",
+               ndf == 3 ? "adaptive quadrature in double" : "closed form in double (the f64 twin itself)",
+               "|error| / max(1, sigma)");
   row.f32 = worst32;
   row.gpu = worst_gpu;
   if (ndf == 3) row.f64 = worst64;  // elsewhere the f64 twin is the reference, so its error is 0 by construction
@@ -119,25 +121,24 @@ StabilityRow cross_section_row(vk::Context& context, int ndf, const char* name) 
 
 std::vector<StabilityRow> kernel_stability(vk::Context& context) {
   std::vector<StabilityRow> rows;
-  rows.push_back(scalar_row(describe("sf_erfcx", "x in [-26, 100] (f32: [-9, 100])", "Boost erfc x exp(x^2), long double",
-                                     "relative"),
-                            linspace(-26.0, 100.0, 5041), linspace(-9.0, 100.0, 4361),
-                            [](double x) { return f64::sf_erfcx(x); }, [](float x) { return f32::sf_erfcx(x); },
-                            erfcx_reference));
-  rows.push_back(scalar_row(describe("sf_log_normal_cdf", "t in [-60, 8]", "log of Boost erfc, long double", "relative"),
-                            linspace(-60.0, 8.0, 2721), linspace(-60.0, 8.0, 2721),
-                            [](double t) { return f64::sf_log_normal_cdf(t); },
-                            [](float t) { return f32::sf_log_normal_cdf(t); }, log_normal_cdf_reference));
-  rows.push_back(scalar_row(describe("sf_phi_over_Phi", "t in [-60, 8]", "Boost erfc, long double", "relative"),
-                            linspace(-60.0, 8.0, 2721), linspace(-60.0, 8.0, 2721),
-                            [](double t) { return f64::sf_phi_over_Phi(t); },
-                            [](float t) { return f32::sf_phi_over_Phi(t); },
-                            [](Real t) { return normal_pdf(t) / std::exp(log_normal_cdf_reference(t)); }));
-  rows.push_back(scalar_row(describe("gaussian_smith_lambda_of_t", "t in [1e-3, 36] (f32: [1e-3, 12])",
-                                     "exp-sinh quadrature, long double", "relative"),
-                            linspace(1e-3, 36.0, 721), linspace(1e-3, 12.0, 241),
-                            [](double t) { return f64::gaussian_smith_lambda_of_t(t); },
-                            [](float t) { return f32::gaussian_smith_lambda_of_t(t); }, smith_lambda_reference));
+  rows.push_back(scalar_row(
+      describe("sf_erfcx", "x in [-26, 100] (f32: [-9, 100])", "Boost erfc x exp(x^2), long double", "relative"),
+      linspace(-26.0, 100.0, 5041), linspace(-9.0, 100.0, 4361), [](double x) { return f64::sf_erfcx(x); },
+      [](float x) { return f32::sf_erfcx(x); }, erfcx_reference));
+  rows.push_back(scalar_row(
+      describe("sf_log_normal_cdf", "t in [-60, 8]", "log of Boost erfc, long double", "relative"),
+      linspace(-60.0, 8.0, 2721), linspace(-60.0, 8.0, 2721), [](double t) { return f64::sf_log_normal_cdf(t); },
+      [](float t) { return f32::sf_log_normal_cdf(t); }, log_normal_cdf_reference));
+  rows.push_back(scalar_row(
+      describe("sf_phi_over_Phi", "t in [-60, 8]", "Boost erfc, long double", "relative"), linspace(-60.0, 8.0, 2721),
+      linspace(-60.0, 8.0, 2721), [](double t) { return f64::sf_phi_over_Phi(t); },
+      [](float t) { return f32::sf_phi_over_Phi(t); },
+      [](Real t) { return normal_pdf(t) / std::exp(log_normal_cdf_reference(t)); }));
+  rows.push_back(scalar_row(
+      describe("gaussian_smith_lambda_of_t", "t in [1e-3, 36] (f32: [1e-3, 12])", "exp-sinh quadrature, long double",
+               "relative"),
+      linspace(1e-3, 36.0, 721), linspace(1e-3, 12.0, 241), [](double t) { return f64::gaussian_smith_lambda_of_t(t); },
+      [](float t) { return f32::gaussian_smith_lambda_of_t(t); }, smith_lambda_reference));
   const char* ndf_names[] = {"Beckmann", "GGX", "Kagiwada-Kalaba", "spherical Gaussian"};
   for (int ndf = 0; ndf < 4; ++ndf) rows.push_back(cross_section_row(context, ndf, ndf_names[ndf]));
   return rows;

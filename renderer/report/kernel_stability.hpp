@@ -11,10 +11,10 @@
 namespace facet::report {
 
 struct StabilityRow {
-  std::string kernel;     // the shared-kernel function
-  std::string domain;     // the hard-case suite
-  std::string reference;  // what it is measured against
-  std::string measure;    // how the error is taken
+  std::string kernel;                   // the shared-kernel function
+  std::string domain;                   // the hard-case suite
+  std::string reference;                // what it is measured against
+  std::string measure;                  // how the error is taken
   std::optional<double> f64, f32, gpu;  // worst error; none: not measured (e.g. no batch shader)
 };
 

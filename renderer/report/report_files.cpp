@@ -50,16 +50,29 @@ nlohmann::json run_json(const BenchRun& run) {
     }
     scenes.push_back(scene);
   }
-  auto optional_number = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  auto optional_number = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+  };
   nlohmann::json stability = nlohmann::json::array();
   for (const StabilityRow& row : run.stability)
-    stability.push_back({{"kernel", row.kernel}, {"domain", row.domain}, {"reference", row.reference},
-                         {"measure", row.measure}, {"f64", optional_number(row.f64)},
-                         {"f32", optional_number(row.f32)}, {"gpu", optional_number(row.gpu)}});
-  return {{"machine", run.machine}, {"device", run.device},   {"facet_version", run.facet_version},
-          {"date", run.date},       {"quick", run.quick},     {"grid", run.grid},
-          {"repeats", run.repeats}, {"seed", run.seed},       {"scenes", scenes},
-          {"kernel_stability", stability}, {"exit_status", run.exit_status()}};
+    stability.push_back({{"kernel", row.kernel},
+                         {"domain", row.domain},
+                         {"reference", row.reference},
+                         {"measure", row.measure},
+                         {"f64", optional_number(row.f64)},
+                         {"f32", optional_number(row.f32)},
+                         {"gpu", optional_number(row.gpu)}});
+  return {{"machine", run.machine},
+          {"device", run.device},
+          {"facet_version", run.facet_version},
+          {"date", run.date},
+          {"quick", run.quick},
+          {"grid", run.grid},
+          {"repeats", run.repeats},
+          {"seed", run.seed},
+          {"scenes", scenes},
+          {"kernel_stability", stability},
+          {"exit_status", run.exit_status()}};
 }
 
 void write_report_files(const BenchRun& run, const std::filesystem::path& out_dir) {

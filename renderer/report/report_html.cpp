@@ -32,8 +32,8 @@ void write_scene(std::ostringstream& html, const BenchRun& run, const SceneRun& 
        << "\" alt=\"reference\"></div>\n";
   for (const SceneRow& row : scene_rows(run, scene.name)) {
     const BenchRecord& r = *row.record;
-    html << "<div class=\"method\"><b" << (row.on_front ? " class=\"front\" title=\"on the Pareto front\"" : "")
-         << ">" << xml_escape(r.method) << "</b>";
+    html << "<div class=\"method\"><b" << (row.on_front ? " class=\"front\" title=\"on the Pareto front\"" : "") << ">"
+         << xml_escape(r.method) << "</b>";
     if (!r.ok()) {
       html << "<p class=\"error\">error: " << xml_escape(*r.error) << "</p></div>\n";
       continue;

@@ -67,10 +67,9 @@ void write_scene(std::ostringstream& md, const BenchRun& run, const SceneRun& sc
     const Spread& t = r.timing.headline();
     md << "| " << r.method << " | " << format_3g(t.median) << " | " << format_3g(t.min) << "–" << format_3g(t.max)
        << " | " << format_3g(r.timing.wall_ms.median) << " | " << format_3g(r.prepare_ms) << " | "
-       << format_3g(r.comparison.rmse) << " | "
-       << format_3g(r.comparison.rel_mse) << " | " << format_3g(r.comparison.psnr) << " | "
-       << optional_3g(r.comparison.ssim) << " | " << format_3g(r.comparison.flip) << " | " << (row.on_front ? "●" : "")
-       << " |\n";
+       << format_3g(r.comparison.rmse) << " | " << format_3g(r.comparison.rel_mse) << " | "
+       << format_3g(r.comparison.psnr) << " | " << optional_3g(r.comparison.ssim) << " | "
+       << format_3g(r.comparison.flip) << " | " << (row.on_front ? "●" : "") << " |\n";
   }
   md << "\n";
 }
@@ -82,8 +81,8 @@ void write_stability(std::ostringstream& md, const BenchRun& run) {
      << "| kernel | hard cases | reference | error | f64 | f32 | GPU |\n|---|---|---|---|---|---|---|\n";
   for (const StabilityRow& row : run.stability)
     md << "| `" << row.kernel << "` | " << table_cell(row.domain) << " | " << table_cell(row.reference) << " | "
-       << table_cell(row.measure) << " | "
-       << optional_3g(row.f64) << " | " << optional_3g(row.f32) << " | " << optional_3g(row.gpu) << " |\n";
+       << table_cell(row.measure) << " | " << optional_3g(row.f64) << " | " << optional_3g(row.f32) << " | "
+       << optional_3g(row.gpu) << " |\n";
   md << "\n";
 }
 

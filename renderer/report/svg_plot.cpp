@@ -51,11 +51,20 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -86,8 +95,8 @@ std::string speed_error_svg(const std::vector<PlotPoint>& all_points, const Plot
     const std::string px = number(x_axis.to_pixel(std::pow(10.0, d)));
     svg << "<line class=\"grid\" x1=\"" << px << "\" y1=\"" << kTop << "\" x2=\"" << px << "\" y2=\""
         << kHeight - kBottom << "\" stroke=\"#ddd\"/>\n";
-    svg << "<text x=\"" << px << "\" y=\"" << kHeight - kBottom + 14 << "\" text-anchor=\"middle\">"
-        << decade_label(d) << "</text>\n";
+    svg << "<text x=\"" << px << "\" y=\"" << kHeight - kBottom + 14 << "\" text-anchor=\"middle\">" << decade_label(d)
+        << "</text>\n";
   }
   for (int d = y_axis.lo_decade; d <= y_axis.hi_decade; ++d) {
     const std::string py = number(y_axis.to_pixel(std::pow(10.0, d)));

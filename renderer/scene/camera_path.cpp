@@ -35,7 +35,8 @@ Pose key_velocity(const std::vector<CameraKey>& keys, size_t i) {
 // The pose at time t within keys a = keys[i], b = keys[i + 1], s = (t - a.frame) / h in [0, 1].
 Pose segment_pose(const CameraPath& path, size_t i, double s) {
   const std::vector<CameraKey>& keys = path.keys;
-  if (path.interpolation == CameraPath::Interpolation::Linear) return pose(keys[i]) + s * (pose(keys[i + 1]) - pose(keys[i]));
+  if (path.interpolation == CameraPath::Interpolation::Linear)
+    return pose(keys[i]) + s * (pose(keys[i + 1]) - pose(keys[i]));
   // Cubic Hermite in time with velocities m_i: p = h00 p_a + h10 h m_a + h01 p_b + h11 h m_b. Both
   // segments meeting at a key share its pose and velocity, so the path is C1 in time.
   const double h = keys[i + 1].frame - keys[i].frame;
@@ -71,7 +72,8 @@ CameraPath read_camera_path(JsonObjectReader r, const Camera& camera) {
     JsonObjectReader k(keys[i], r.file(), r.key_path("keys") + "[" + std::to_string(i) + "]");
     CameraKey key;
     key.frame = k.integer_in("frame", 0, path.frames - 1);
-    if (!path.keys.empty() && key.frame <= path.keys.back().frame) k.fail("frame", "must be greater than the previous key's frame");
+    if (!path.keys.empty() && key.frame <= path.keys.back().frame)
+      k.fail("frame", "must be greater than the previous key's frame");
     key.position = k.vec3("position");
     key.target = k.vec3("target");
     key.fov_y_deg = k.number("fov_y", camera.fov_y_deg);
@@ -87,8 +89,8 @@ CameraPath read_camera_path(JsonObjectReader r, const Camera& camera) {
     if (!(c.fov_y_deg > 0.0 && c.fov_y_deg < 180.0))
       throw Error(where + " has fov_y " + std::to_string(c.fov_y_deg) + ", outside (0, 180) degrees");
     if (const char* defect = camera_defect(c))
-      throw Error(where + (defect == std::string("target") ? " has its target at its position"
-                                                           : " looks along camera.up"));
+      throw Error(where +
+                  (defect == std::string("target") ? " has its target at its position" : " looks along camera.up"));
   }
   return path;
 }
@@ -115,7 +117,8 @@ int frame_count(const Scene& scene) { return scene.camera_path ? scene.camera_pa
 Camera camera_at(const Scene& scene, int frame) {
   if (frame < 0 || frame >= frame_count(scene))
     throw Error(scene.source.string() + ": frame " + std::to_string(frame) + " is outside [0, " +
-                std::to_string(frame_count(scene) - 1) + "]" + (scene.camera_path ? "" : " (the scene has no camera_path)"));
+                std::to_string(frame_count(scene) - 1) + "]" +
+                (scene.camera_path ? "" : " (the scene has no camera_path)"));
   return scene.camera_path ? camera_on_path(*scene.camera_path, scene.camera, frame) : scene.camera;
 }
 

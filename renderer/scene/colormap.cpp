@@ -17,19 +17,22 @@ bool finite(const glm::dvec3& c) { return std::isfinite(c.x) && std::isfinite(c.
 
 // The CSV texts generated into the build tree (see CMakeLists.txt).
 const std::map<std::string, const char*>& builtin_csv() {
-  static const std::map<std::string, const char*> csv = {
-      {"viridis",
+  static const std::map<std::string, const char*> csv = {{
+                                                             "viridis",
 #include "scene/colormap_viridis_csv.inc"
-      },
-      {"magma",
+                                                         },
+                                                         {
+                                                             "magma",
 #include "scene/colormap_magma_csv.inc"
-      },
-      {"inferno",
+                                                         },
+                                                         {
+                                                             "inferno",
 #include "scene/colormap_inferno_csv.inc"
-      },
-      {"plasma",
+                                                         },
+                                                         {
+                                                             "plasma",
 #include "scene/colormap_plasma_csv.inc"
-      }};
+                                                         }};
   return csv;
 }
 

@@ -44,7 +44,8 @@ class Colormap {
 };
 
 // "viridis", "magma", "inferno" or "plasma"; throws facet::Error for any other name.
-Colormap builtin_colormap(const std::string& name, Colormap::Interpolation interpolation = Colormap::Interpolation::Linear,
+Colormap builtin_colormap(const std::string& name,
+                          Colormap::Interpolation interpolation = Colormap::Interpolation::Linear,
                           glm::dvec2 domain = {0.0, 1.0});
 
 inline constexpr const char* kBuiltinColormapNames = "viridis, magma, inferno, plasma";

@@ -10,8 +10,8 @@
 #include <string_view>
 #include <utility>
 
-#include <glm/gtc/quaternion.hpp>
 #include <tiny_gltf.h>
+#include <glm/gtc/quaternion.hpp>
 
 #include "common/error.hpp"
 #include "scene/gltf_accessor.hpp"

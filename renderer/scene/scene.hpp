@@ -51,7 +51,7 @@ struct CameraPath {
 };
 
 struct DirectionalLight {
-  glm::dvec3 direction{0.0, 1.0, 0.0};  // unit vector from the surface toward the light
+  glm::dvec3 direction{0.0, 1.0, 0.0};   // unit vector from the surface toward the light
   glm::dvec3 irradiance{1.0, 1.0, 1.0};  // RGB irradiance on a surface facing the light
 };
 
@@ -93,9 +93,9 @@ struct BeckmannSpecular {
 // geometry by the reference. Lambertian with albedo = height_colormap(z) · slope_colormap(|∇z|)
 // (each factor only when given), plus the optional specular lobe.
 struct MicrosurfaceMaterial {
-  ScalarTexture heights;     // h, as loaded or generated
-  double texel_size = 1.0;   // Δ, world units
-  double height_scale = 1.0; // world height z = height_scale · h
+  ScalarTexture heights;                    // h, as loaded or generated
+  double texel_size = 1.0;                  // Δ, world units
+  double height_scale = 1.0;                // world height z = height_scale · h
   std::optional<Colormap> height_colormap;  // of z, world units
   std::optional<Colormap> slope_colormap;   // of |∇z| = tan of the local tilt
   std::optional<BeckmannSpecular> specular;
@@ -149,7 +149,7 @@ struct Mesh {
   // Per vertex, optional (only with normals): xyz = unit tangent along +u, w = +-1 handedness,
   // bitangent = w * cross(normal, tangent.xyz) as in glTF 2.0.
   std::vector<glm::dvec4> tangents;
-  std::vector<uint32_t> indices;    // three per triangle
+  std::vector<uint32_t> indices;  // three per triangle
   uint32_t material = 0;
 
   size_t triangle_count() const { return indices.size() / 3; }

@@ -72,8 +72,8 @@ Colormap read_colormap(const nlohmann::json& value, const std::string& file, con
 ColormapTextureMaterial read_colormap_texture_material(JsonObjectReader& r, const std::filesystem::path& base_dir) {
   ScalarTexture texture =
       read_scalar_source(JsonObjectReader(r.value("texture"), r.file(), r.key_path("texture")), base_dir, std::nullopt);
-  Colormap colormap = checked_albedo_map(read_colormap(r.value("colormap"), r.file(), r.key_path("colormap")), r,
-                                         "colormap");
+  Colormap colormap =
+      checked_albedo_map(read_colormap(r.value("colormap"), r.file(), r.key_path("colormap")), r, "colormap");
   r.finish();
   return {std::move(texture), std::move(colormap)};
 }
@@ -82,8 +82,8 @@ MicrosurfaceMaterial read_microsurface_material(JsonObjectReader& r, const std::
   MicrosurfaceMaterial m;
   m.texel_size = r.positive_number("texel_size");
   m.height_scale = r.number("height_scale", m.height_scale);
-  m.heights = read_scalar_source(JsonObjectReader(r.value("height"), r.file(), r.key_path("height")), base_dir,
-                                 m.texel_size);
+  m.heights =
+      read_scalar_source(JsonObjectReader(r.value("height"), r.file(), r.key_path("height")), base_dir, m.texel_size);
   if (m.heights->width < 2 || m.heights->height < 2) r.fail("height", "must be at least 2x2 texels");
   if (r.has("height_colormap"))
     m.height_colormap = checked_albedo_map(

@@ -9,8 +9,7 @@ namespace facet::vk {
 
 Buffer::Buffer(Context& context, VkDeviceSize bytes)
     : Buffer(context, bytes,
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                 VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
              false) {}
 
 Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, bool host_visible)
@@ -29,8 +28,7 @@ Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, b
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     uint32_t type = host_visible
                         ? context.memory_type(needs.memoryTypeBits, kMappable, 0)
-                        : context.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
-                                              kMappable);
+                        : context.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, kMappable);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = needs.size;
     alloc.memoryTypeIndex = type;

@@ -39,8 +39,7 @@ class Buffer {
 
  private:
   Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, bool host_visible);
-  void copy(VkBuffer from, VkBuffer to, VkDeviceSize bytes, VkDeviceSize from_offset,
-            VkDeviceSize to_offset) const;
+  void copy(VkBuffer from, VkBuffer to, VkDeviceSize bytes, VkDeviceSize from_offset, VkDeviceSize to_offset) const;
 
   Context* context_;
   VkDeviceSize size_ = 0;

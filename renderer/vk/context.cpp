@@ -14,17 +14,22 @@ constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 std::string device_type_name(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated-gpu";
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete-gpu";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual-gpu";
-    default: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "cpu";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated-gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete-gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual-gpu";
+    default:
+      return "other";
   }
 }
 
 std::string version_string(uint32_t v) {
-  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
-         "." + std::to_string(VK_API_VERSION_PATCH(v));
+  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
+         std::to_string(VK_API_VERSION_PATCH(v));
 }
 
 DeviceInfo describe(VkPhysicalDevice physical, uint32_t index) {
@@ -60,8 +65,9 @@ VkInstance create_instance(bool validation, const VkDebugUtilsMessengerCreateInf
   const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
   if (validation) {
     if (!layer_available(kValidationLayer))
-      throw Error("Vulkan validation requested but VK_LAYER_KHRONOS_validation is not installed "
-                  "(Debian package vulkan-validationlayers)");
+      throw Error(
+          "Vulkan validation requested but VK_LAYER_KHRONOS_validation is not installed "
+          "(Debian package vulkan-validationlayers)");
     info.enabledLayerCount = 1;
     info.ppEnabledLayerNames = &kValidationLayer;
     info.enabledExtensionCount = 1;
@@ -81,8 +87,7 @@ std::vector<VkPhysicalDevice> physical_devices(VkInstance instance) {
   check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
   std::vector<VkPhysicalDevice> devices(count);
   check(vkEnumeratePhysicalDevices(instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
-  if (devices.empty())
-    throw Error("no Vulkan device found (install mesa-vulkan-drivers for the lavapipe CPU device)");
+  if (devices.empty()) throw Error("no Vulkan device found (install mesa-vulkan-drivers for the lavapipe CPU device)");
   return devices;
 }
 
@@ -143,13 +148,13 @@ std::vector<DeviceInfo> list_devices() {
   return infos;
 }
 
-VKAPI_ATTR VkBool32 VKAPI_CALL Context::on_validation_message(
-    VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
-    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+VKAPI_ATTR VkBool32 VKAPI_CALL Context::on_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                                              VkDebugUtilsMessageTypeFlagsEXT,
+                                                              const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                              void* user) {
   auto* self = static_cast<Context*>(user);
   ++self->validation_messages_;
-  std::string message = std::string("Vulkan validation: ") +
-                        (data->pMessageIdName ? data->pMessageIdName : "") + ": " +
+  std::string message = std::string("Vulkan validation: ") + (data->pMessageIdName ? data->pMessageIdName : "") + ": " +
                         (data->pMessage ? data->pMessage : "");
   if (self->validation_handler_)
     self->validation_handler_(message);
@@ -164,10 +169,9 @@ void Context::set_validation_handler(std::function<void(const std::string&)> han
 
 Context::Context(const ContextOptions& options) : validation_(options.validation) {
   VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  messenger.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                              VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                          VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  messenger.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messenger.pfnUserCallback = &Context::on_validation_message;
   messenger.pUserData = this;
@@ -206,15 +210,13 @@ Context::Context(const ContextOptions& options) : validation_(options.validation
     pool.queueFamilyIndex = queue_family_;
     check(vkCreateCommandPool(device_, &pool, nullptr, &command_pool_), "vkCreateCommandPool");
 
-    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 256},
-                                    {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 64}};
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 256}, {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 64}};
     VkDescriptorPoolCreateInfo descriptors{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     descriptors.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
     descriptors.maxSets = 32;
     descriptors.poolSizeCount = 2;
     descriptors.pPoolSizes = sizes;
-    check(vkCreateDescriptorPool(device_, &descriptors, nullptr, &descriptor_pool_),
-          "vkCreateDescriptorPool");
+    check(vkCreateDescriptorPool(device_, &descriptors, nullptr, &descriptor_pool_), "vkCreateDescriptorPool");
 
     VkQueryPoolCreateInfo query{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     query.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -258,8 +260,7 @@ uint32_t Context::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required
                               VkMemoryPropertyFlags preferred) const {
   for (VkMemoryPropertyFlags wanted : {required | preferred, required})
     for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i)
-      if ((type_bits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & wanted) == wanted)
-        return i;
+      if ((type_bits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
   throw Error("the Vulkan device has no suitable memory type");
 }
 
@@ -285,8 +286,7 @@ double Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& reco
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
   }
   record(cmd);
-  if (has_timestamps_)
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+  if (has_timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
   check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
 
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};

@@ -56,8 +56,7 @@ class Context {
   bool validation_enabled() const { return validation_; }
 
   // Memory type index with all `required` flags (and `preferred` ones if possible).
-  uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
-                       VkMemoryPropertyFlags preferred) const;
+  uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
 
   // Records commands with `record`, submits them, waits; returns the GPU time in
   // milliseconds between a timestamp written before and after the recorded commands
@@ -69,9 +68,9 @@ class Context {
 
  private:
   void release();
-  static VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(
-      VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
-      const VkDebugUtilsMessengerCallbackDataEXT*, void*);
+  static VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                                              VkDebugUtilsMessageTypeFlagsEXT,
+                                                              const VkDebugUtilsMessengerCallbackDataEXT*, void*);
 
   bool validation_ = false;
   uint32_t validation_messages_ = 0;

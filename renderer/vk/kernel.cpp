@@ -12,8 +12,8 @@ Kernel::Kernel(Context& context, const KernelDesc& desc)
       push_constant_bytes_(desc.push_constant_bytes) {
   if (desc.push_constant_bytes > context.limits().maxPushConstantsSize)
     throw Error("kernel " + name_ + ": push constants exceed the device limit");
-  PipelineKey key{{desc.spirv.begin(), desc.spirv.end()}, desc.buffer_count, desc.image_count,
-                  desc.push_constant_bytes, {}};
+  PipelineKey key{
+      {desc.spirv.begin(), desc.spirv.end()}, desc.buffer_count, desc.image_count, desc.push_constant_bytes, {}};
   for (const auto& constant : desc.specialization) key.specialization.emplace_back(constant.id, constant.value);
   compiled_ = context.pipelines().get(std::move(key), [&] { return compile(context.device(), desc); });
 }
@@ -28,8 +28,7 @@ std::shared_ptr<const CompiledKernel> Kernel::compile(VkDevice device, const Ker
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set_info.bindingCount = static_cast<uint32_t>(bindings.size());
   set_info.pBindings = bindings.data();
-  check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &compiled->set_layout),
-        "vkCreateDescriptorSetLayout");
+  check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &compiled->set_layout), "vkCreateDescriptorSetLayout");
 
   VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, desc.push_constant_bytes};
   VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -48,8 +47,7 @@ std::shared_ptr<const CompiledKernel> Kernel::compile(VkDevice device, const Ker
   std::vector<VkSpecializationMapEntry> entries;
   std::vector<uint32_t> values;
   for (const auto& constant : desc.specialization) {
-    entries.push_back({constant.id, static_cast<uint32_t>(values.size() * sizeof(uint32_t)),
-                       sizeof(uint32_t)});
+    entries.push_back({constant.id, static_cast<uint32_t>(values.size() * sizeof(uint32_t)), sizeof(uint32_t)});
     values.push_back(constant.value);
   }
   VkSpecializationInfo specialization{static_cast<uint32_t>(entries.size()), entries.data(),
@@ -61,8 +59,7 @@ std::shared_ptr<const CompiledKernel> Kernel::compile(VkDevice device, const Ker
   pipeline_info.stage.pName = "main";
   pipeline_info.stage.pSpecializationInfo = entries.empty() ? nullptr : &specialization;
   pipeline_info.layout = compiled->layout;
-  VkResult result =
-      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &compiled->pipeline);
+  VkResult result = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &compiled->pipeline);
   vkDestroyShaderModule(device, module, nullptr);
   check(result, ("vkCreateComputePipelines (" + desc.name + ")").c_str());
   return compiled;
@@ -141,8 +138,8 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
     barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier,
-                         0, nullptr, 0, nullptr);
+                         VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         nullptr);
   });
 }
 

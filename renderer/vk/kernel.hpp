@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
 
 #include "vk/buffer.hpp"
 #include "vk/context.hpp"
@@ -48,8 +48,8 @@ class Kernel {
   // `groups` workgroups and waits. Returns the GPU time in milliseconds.
   double dispatch(std::span<const Buffer* const> buffers, const void* push, glm::uvec3 groups);
   // The same with storage images at bindings buffer_count.. (a kernel with image_count > 0).
-  double dispatch(std::span<const Buffer* const> buffers, std::span<const StorageImage* const> images,
-                  const void* push, glm::uvec3 groups);
+  double dispatch(std::span<const Buffer* const> buffers, std::span<const StorageImage* const> images, const void* push,
+                  glm::uvec3 groups);
 
  private:
   Context* context_;

@@ -87,8 +87,8 @@ void StorageImage::copy(bool to_image, VkBuffer staging) const {
     // GENERAL -> the transfer's optimal layout -> GENERAL again, with the copy's writes made
     // visible to later shaders (upload) or to the host (download).
     const VkAccessFlags transfer_access = to_image ? VK_ACCESS_TRANSFER_WRITE_BIT : VK_ACCESS_TRANSFER_READ_BIT;
-    record_transition(cmd, image_, VK_IMAGE_LAYOUT_GENERAL, transfer_layout, VK_ACCESS_SHADER_WRITE_BIT, transfer_access,
-               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    record_transition(cmd, image_, VK_IMAGE_LAYOUT_GENERAL, transfer_layout, VK_ACCESS_SHADER_WRITE_BIT,
+                      transfer_access, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {width_, height_, 1};
@@ -97,8 +97,9 @@ void StorageImage::copy(bool to_image, VkBuffer staging) const {
     else
       vkCmdCopyImageToBuffer(cmd, image_, transfer_layout, staging, 1, &region);
     record_transition(cmd, image_, transfer_layout, VK_IMAGE_LAYOUT_GENERAL, transfer_access,
-               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT,
-               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT);
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT);
   });
 }
 

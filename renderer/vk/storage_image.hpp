@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
 
 #include "vk/context.hpp"
 

@@ -21,8 +21,8 @@
 
 #include "batch/job.hpp"
 #include "image/exr_io.hpp"
-#include "support/temp_dir.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
 
 extern char** environ;
 
@@ -38,9 +38,11 @@ const std::string kFacet = FACET_EXECUTABLE;
 std::string plane_scene(int frames) {
   return R"({
   "camera": {"position": [0, 1, 0], "target": [0, 0, -1], "fov_y": 70, "width": 32, "height": 18},
-  "camera_path": {"frames": )" + std::to_string(frames) + R"(, "interpolation": "smooth", "keys": [
+  "camera_path": {"frames": )" +
+         std::to_string(frames) + R"(, "interpolation": "smooth", "keys": [
     {"frame": 0, "position": [0, 4, 2], "target": [0, 0, -1], "fov_y": 60},
-    {"frame": )" + std::to_string(frames - 1) + R"(, "position": [0, 0.5, 1], "target": [0, 0, -6], "fov_y": 80}]},
+    {"frame": )" +
+         std::to_string(frames - 1) + R"(, "position": [0, 0.5, 1], "target": [0, 0, -6], "fov_y": 80}]},
   "light": {"direction": [0.3, 1.0, 0.4], "irradiance": [3, 3, 3]},
   "ambient": [0.3, 0.3, 0.3], "background": [0.55, 0.65, 0.8],
   "materials": {"bands": {"type": "colormap_texture",
@@ -53,7 +55,8 @@ std::string plane_scene(int frames) {
 
 std::string ball_scene(const std::string& background) {
   return R"({"camera": {"position": [0, 1, 4], "target": [0, 0.5, 0], "width": 32, "height": 18},
-  "background": )" + background + R"(, "materials": {"grey": {"type": "lambert"}},
+  "background": )" +
+         background + R"(, "materials": {"grey": {"type": "lambert"}},
   "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5, "material": "grey"},
               {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "grey"}]})";
 }
@@ -114,10 +117,12 @@ class Batch : public ::testing::Test {
   }
   void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
   // A job over `scenes` and `methods` (JSON arrays), tiny frames, reference grid `grid`.
-  fs::path job(const std::string& scenes, const std::string& methods, int grid = 2, const std::string& name = "job.json") {
+  fs::path job(const std::string& scenes, const std::string& methods, int grid = 2,
+               const std::string& name = "job.json") {
     write(name, R"({"scenes": )" + scenes + R"(, "methods": )" + methods +
                     R"(, "output": "out/{scene}/{method}/{frame:02}.exr", "width": 32, "height": 18,
-                       "reference": {"grid": )" + std::to_string(grid) + "}}");
+                       "reference": {"grid": )" +
+                    std::to_string(grid) + "}}");
     return dir_ / name;
   }
   test::CommandResult batch(const fs::path& job_file, const fs::path& out, const std::string& extra = "") {
@@ -174,7 +179,7 @@ pid_t spawn_batch(const fs::path& job_file, const fs::path& out, const fs::path&
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   const std::string job_text = job_file.string(), out_text = out.string();
-  std::vector<char*> argv{const_cast<char*>(kFacet.c_str()), const_cast<char*>("batch"),
+  std::vector<char*> argv{const_cast<char*>(kFacet.c_str()),   const_cast<char*>("batch"),
                           const_cast<char*>(job_text.c_str()), const_cast<char*>("--out-dir"),
                           const_cast<char*>(out_text.c_str()), nullptr};
   pid_t pid = -1;
@@ -305,8 +310,9 @@ TEST_F(Batch, RenderFrameDrawsTheBatchFrameAndJobErrorsAreOneLine) {
   const fs::path job_file = job(R"(["scenes/plane.json"])", R"(["filtered"])");
   const fs::path out = dir_ / "out_root";
   ASSERT_EQ(batch(job_file, out).exit_code, 0);
-  const auto single = run_command(kFacet + " render " + (dir_ / "scenes/plane.json").string() +
-                                  " --frame 2 --method filtered --width 32 --height 18 -o " + (dir_ / "f2.exr").string());
+  const auto single =
+      run_command(kFacet + " render " + (dir_ / "scenes/plane.json").string() +
+                  " --frame 2 --method filtered --width 32 --height 18 -o " + (dir_ / "f2.exr").string());
   ASSERT_EQ(single.exit_code, 0) << single.err;
   ExrMetadata metadata;
   const Image a = read_exr(dir_ / "f2.exr", &metadata), b = read_exr(out / "out/plane/filtered/02.exr");

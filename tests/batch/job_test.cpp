@@ -54,7 +54,8 @@ TEST(Job, ReadsEveryKeyAndExpandsScenesInJobOrder) {
     "pixel_type": "float", "preview": false, "exposure": 1.5, "reference": {"grid": 4, "seed": 7},
     "manifest": "state/m.json"})");
   const Job job = load_job(dir / "job.json");
-  const std::vector<fs::path> scenes{dir / "scenes/b.json", dir / "scenes/a.json"};  // b first, then the rest of the glob
+  const std::vector<fs::path> scenes{dir / "scenes/b.json",
+                                     dir / "scenes/a.json"};  // b first, then the rest of the glob
   EXPECT_EQ(job.scenes, scenes);
   EXPECT_EQ(job.methods, (std::vector<std::string>{"naive", "ss:4", "reference"}));
   EXPECT_EQ(job.frames, (std::vector<int>{0, 3}));
@@ -84,8 +85,8 @@ TEST(Job, DefaultsAndOneLineErrors) {
     return error_of([&] { load_job(dir / "bad.json"); });
   };
   const std::string file = (dir / "bad.json").string();
-  EXPECT_EQ(error(R"({"scenes": ["s.json"], "methods": ["naive"], "output": "x.exr", "widht": 3})").rfind(
-                file + ": unknown key \"widht\" in the top level", 0),
+  EXPECT_EQ(error(R"({"scenes": ["s.json"], "methods": ["naive"], "output": "x.exr", "widht": 3})")
+                .rfind(file + ": unknown key \"widht\" in the top level", 0),
             0u);
   EXPECT_EQ(error(R"({"scenes": [], "methods": ["naive"], "output": "x.exr"})"),
             file + ": scenes must be a non-empty array of strings, got []");
@@ -98,7 +99,8 @@ TEST(Job, DefaultsAndOneLineErrors) {
   EXPECT_EQ(error(R"({"scenes": ["nothing/*.json"], "methods": ["naive"], "output": "x.exr"})"),
             file + ": scenes: nothing/*.json: matches no file");
   EXPECT_EQ(error("{\"scenes\": "), file + ": invalid JSON");
-  EXPECT_EQ(error_of([&] { load_job(dir / "absent.json"); }), (dir / "absent.json").string() + ": cannot open for reading");
+  EXPECT_EQ(error_of([&] { load_job(dir / "absent.json"); }),
+            (dir / "absent.json").string() + ": cannot open for reading");
 }
 
 TEST(Items, OutputPatternFields) {
@@ -122,9 +124,9 @@ TEST(Items, OrderIsScenesThenMethodsThenFrames) {
   const std::vector<Item> items = expand_items(two_scene_job(), {3, 1});
   std::vector<std::string> outputs;
   for (const Item& item : items) outputs.push_back(item.output);
-  EXPECT_EQ(outputs, (std::vector<std::string>{"a/naive/0.exr", "a/naive/1.exr", "a/naive/2.exr", "a/filtered/0.exr",
-                                               "a/filtered/1.exr", "a/filtered/2.exr", "b/naive/0.exr",
-                                               "b/filtered/0.exr"}));
+  EXPECT_EQ(outputs,
+            (std::vector<std::string>{"a/naive/0.exr", "a/naive/1.exr", "a/naive/2.exr", "a/filtered/0.exr",
+                                      "a/filtered/1.exr", "a/filtered/2.exr", "b/naive/0.exr", "b/filtered/0.exr"}));
   Job fixed = two_scene_job();
   fixed.frames = std::vector<int>{5};  // the job's frames override the scenes' counts
   EXPECT_EQ(expand_items(fixed, {3, 1}).size(), 4u);

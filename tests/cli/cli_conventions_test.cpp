@@ -64,8 +64,7 @@ TEST_F(CliConventions, OutputFoldersAreCreated) {
   auto r = facet("make noise --size 8 -o " + out("made/deep/n.exr"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir_ / "made" / "deep" / "n.exr"));
-  r = facet("compare " + out("made/deep/n.exr") + " " + out("made/deep/n.exr") + " --heatmap " +
-            out("maps/sub/h.png"));
+  r = facet("compare " + out("made/deep/n.exr") + " " + out("made/deep/n.exr") + " --heatmap " + out("maps/sub/h.png"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir_ / "maps" / "sub" / "h.png"));
 }

@@ -110,10 +110,11 @@ TEST_F(Cli, UnknownDeviceIsOneLineError) {
 TEST_F(Cli, NoVulkanDeviceIsOneLineError) {
   // Point the loader at a driver manifest that does not exist: no device at all. (Without
   // validation: with it, the loader also reports the missing manifest through the layer.)
-  expect_clean_failure(run_command("env -u FACET_VALIDATION VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json " +
-                                   kFacet + " render " + (kScenes / "default.json").string() + " -o " +
-                                   (dir_ / "out.exr").string()),
-                       "Vulkan");
+  expect_clean_failure(
+      run_command(
+          "env -u FACET_VALIDATION VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json " +
+          kFacet + " render " + (kScenes / "default.json").string() + " -o " + (dir_ / "out.exr").string()),
+      "Vulkan");
 }
 
 TEST_F(Cli, InfoListsTheDevice) {

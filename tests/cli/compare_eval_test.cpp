@@ -147,14 +147,20 @@ TEST_F(CompareCli, CropComparesOnlyThatRegion) {
 // Bad lines get an error and keep their id; the good lines around them are still answered.
 TEST(EvalCli, VisibleSlopeAnswersEveryLineInOrder) {
   const std::string input =
-      R"({"id": 1, "sx": 0.1, "sy": 0, "vx": 0.2, "vy": 0.3, "cxy": 0.01, "theta": 0.5, "phi": 0})" "\n"
-      R"({"id": 2, "sx": 0.1, "sy": 0, "vx": 0.2, "vy": 0.3, "theta": 0.5, "phi": 0})" "\n"
-      R"({"id": 3, "sx": 0.1, "sy": 0, "vx": 0.2, "vy": 0.3, "cxy": 1, "theta": 0.5, "phi": 0})" "\n"
-      R"({"id": 4, "sx": "a", "sy": 0, "vx": 0.2, "vy": 0.3, "cxy": 0, "theta": 0.5, "phi": 0})" "\n"
-      R"({"id": 5, "sx": 0.1, "sy": 0, "vx": 0.2, "vy": 0.3, "cxy": 0, "theta": 1.5707963267948966, "phi": 0})" "\n"
+      R"({"id": 1, "sx": 0.1, "sy": 0, "vx": 0.2, "vy": 0.3, "cxy": 0.01, "theta": 0.5, "phi": 0})"
+      "\n"
+      R"({"id": 2, "sx": 0.1, "sy": 0, "vx": 0.2, "vy": 0.3, "theta": 0.5, "phi": 0})"
+      "\n"
+      R"({"id": 3, "sx": 0.1, "sy": 0, "vx": 0.2, "vy": 0.3, "cxy": 1, "theta": 0.5, "phi": 0})"
+      "\n"
+      R"({"id": 4, "sx": "a", "sy": 0, "vx": 0.2, "vy": 0.3, "cxy": 0, "theta": 0.5, "phi": 0})"
+      "\n"
+      R"({"id": 5, "sx": 0.1, "sy": 0, "vx": 0.2, "vy": 0.3, "cxy": 0, "theta": 1.5707963267948966, "phi": 0})"
+      "\n"
       "not json\n"
       "\n"
-      R"({"id": "last", "sx": 0, "sy": 0, "vx": 0.2, "vy": 0.2, "cxy": 0, "theta": 0, "phi": 0, "extra": 1})" "\n";
+      R"({"id": "last", "sx": 0, "sy": 0, "vx": 0.2, "vy": 0.2, "cxy": 0, "theta": 0, "phi": 0, "extra": 1})"
+      "\n";
   for (const char* device : {"cpu", "gpu"}) {
     auto r = run_command(kFacet + " eval visible-slope --device " + device, input);
     ASSERT_EQ(r.exit_code, 0) << r.err;

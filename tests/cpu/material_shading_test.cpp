@@ -34,7 +34,8 @@ TEST(MaterialShading, BilinearMeanOverATileIsTheTexelMean) {
 
 TEST(MaterialShading, MicrosurfaceAlbedoIsTheProductOfTheGivenMaps) {
   MicrosurfaceMaterial m;
-  m.height_colormap = Colormap({0.0, 1.0}, {glm::dvec3(0.0), glm::dvec3(1.0, 0.5, 0.25)}, Colormap::Interpolation::Linear);
+  m.height_colormap =
+      Colormap({0.0, 1.0}, {glm::dvec3(0.0), glm::dvec3(1.0, 0.5, 0.25)}, Colormap::Interpolation::Linear);
   EXPECT_EQ(cpu::microsurface_albedo(m, 0.5, {3.0, 4.0}), glm::dvec3(0.5, 0.25, 0.125));
   m.slope_colormap = Colormap({0.0, 10.0}, {glm::dvec3(0.0), glm::dvec3(1.0)}, Colormap::Interpolation::Linear);
   // |slope| = 5 -> 0.5.

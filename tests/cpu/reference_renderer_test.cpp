@@ -98,9 +98,10 @@ TEST(ReferenceRenderer, LinearColormapGivesTheFilteredMean) {
   // a + (b − a) · (the pixel of the identity map): the mean of t over the same samples.
   const auto texture = noise(64, 3);
   const glm::dvec3 a(0.1, 0.7, 0.2), b(0.9, 0.3, 0.6);
-  const Scene identity = textured_plane(texture, Colormap({0.0, 1.0}, {glm::dvec3(0.0), glm::dvec3(1.0)},
-                                                          Colormap::Interpolation::Linear), 3.0, 60.0);
-  const Scene linear = textured_plane(texture, Colormap({0.0, 1.0}, {a, b}, Colormap::Interpolation::Linear), 3.0, 60.0);
+  const Scene identity = textured_plane(
+      texture, Colormap({0.0, 1.0}, {glm::dvec3(0.0), glm::dvec3(1.0)}, Colormap::Interpolation::Linear), 3.0, 60.0);
+  const Scene linear =
+      textured_plane(texture, Colormap({0.0, 1.0}, {a, b}, Colormap::Interpolation::Linear), 3.0, 60.0);
   const Image t = render(identity, 32, 32, 4), c = render(linear, 32, 32, 4);
   double worst = 0.0;
   for (std::size_t p = 0; p < t.pixel_count(); ++p)
@@ -168,10 +169,10 @@ TEST(ReferenceRenderer, FlatHeightFieldGivesTheUnmaskedAnswer) {
       const glm::dvec3 d = kernels::f64::camera_ray_direction(cam.forward, cam.right, cam.up,
                                                               glm::dvec2(x + 0.5, y + 0.5), glm::dvec2(24, 16));
       const glm::dvec3 v = -d, wo(glm::dot(v, t), glm::dot(v, b), glm::dot(v, n));
-      const glm::dvec3 expected = albedo / std::numbers::pi * (s.light.irradiance * wi.z + s.ambient) +
-                                  s.light.irradiance * m.specular->reflectance * beckmann_f_cos(wi, wo, m.specular->alpha);
-      for (int k = 0; k < 3; ++k)
-        worst = std::max(worst, std::abs(image.at(x, y)[k] - expected[k]) / expected[k]);
+      const glm::dvec3 expected =
+          albedo / std::numbers::pi * (s.light.irradiance * wi.z + s.ambient) +
+          s.light.irradiance * m.specular->reflectance * beckmann_f_cos(wi, wo, m.specular->alpha);
+      for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(image.at(x, y)[k] - expected[k]) / expected[k]);
     }
   }
   // Float storage (6e-8) plus the f64 kernels' Λ against erf (1e-14): 1e-6 leaves room for neither to hide.
@@ -231,8 +232,8 @@ TEST(ReferenceRenderer, OverheadViewOfAHeightFieldSeesItsAreaFractionAndGrazingH
   // per axis, 19 degrees) hide the valleys behind the peaks.
   const Camera grazing{{0.0, 0.05, 8.0}, {0.0, 0.0, 8.0 - 0.05 / std::tan(glm::radians(6.0))}, {0, 1, 0}, 10.0, 32, 32};
   const double seen_grazing = mean_channel(render(snow_field(grazing), 32, 32, 4), 0);
-  RecordProperty("measured", std::to_string(above) + " " + std::to_string(seen_overhead) + " " +
-                                 std::to_string(seen_grazing));
+  RecordProperty("measured",
+                 std::to_string(above) + " " + std::to_string(seen_overhead) + " " + std::to_string(seen_grazing));
   EXPECT_GT(seen_grazing, seen_overhead + 0.15);
 }
 
@@ -292,7 +293,8 @@ TEST(ReferenceRenderer, JitterIsUniformAndDecorrelated) {
   double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
   const int count = 1 << 16;
   for (int i = 0; i < count; ++i) {
-    const glm::dvec2 u = cpu::reference_jitter(1, static_cast<std::uint64_t>(i / 64), static_cast<std::uint64_t>(i % 64));
+    const glm::dvec2 u =
+        cpu::reference_jitter(1, static_cast<std::uint64_t>(i / 64), static_cast<std::uint64_t>(i % 64));
     ASSERT_TRUE(u.x >= 0.0 && u.x < 1.0 && u.y >= 0.0 && u.y < 1.0);
     sx += u.x, sy += u.y, sxx += u.x * u.x, syy += u.y * u.y, sxy += u.x * u.y;
   }

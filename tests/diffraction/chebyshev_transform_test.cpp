@@ -28,7 +28,8 @@ double worst_bin_error(const diffraction::Grating& g, const diffraction::Spectra
   const ChebyshevTransform::AtX interpolated = cheb.at(x);
   double worst = 0.0;
   for (int jy = -t.J; jy <= t.J; ++jy)
-    for (int jx = -t.J; jx <= t.J; ++jx) worst = std::max(worst, std::abs(interpolated.bin(jx, jy) - direct.at(jx, jy)));
+    for (int jx = -t.J; jx <= t.J; ++jx)
+      worst = std::max(worst, std::abs(interpolated.bin(jx, jy) - direct.at(jx, jy)));
   return worst;
 }
 
@@ -43,9 +44,10 @@ TEST(ChebyshevTransform, RemainderBoundIsBelowDoubleNoiseLevel) {
 
 TEST(ChebyshevTransform, MatchesTheExactBinsAtRandomX) {
   // A tall sinusoid (x_max = 2 k_max h_s = 10.5: three pieces) and snake-like fingers (one piece).
-  for (const char* json :
-       {R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":300,"size_um":4,"samples":32})",
-        R"({"type":"fingers","period_nm":800,"amplitude_nm":90,"size_um":3.2,"samples":64,"finger_length_nm":1600,"coherence_um":1.6})"}) {
+  for (
+      const char* json :
+      {R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":300,"size_um":4,"samples":32})",
+       R"({"type":"fingers","period_nm":800,"amplitude_nm":90,"size_um":3.2,"samples":64,"finger_length_nm":1600,"coherence_um":1.6})"}) {
     const auto g = test::grating(json);
     const auto t = diffraction::build_spectral_tables(g, {.lambda_min_nm = 360, .tolerance = 1e-3, .terms = 1});
     const ChebyshevTransform cheb(g, t);

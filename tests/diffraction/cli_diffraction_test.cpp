@@ -16,8 +16,7 @@ namespace {
 using test::run_command;
 
 const std::string kFacet = FACET_EXECUTABLE;
-const std::string kGrating =
-    R"('{"type":"sinusoid","period_nm":1300,"amplitude_nm":80,"size_um":26,"samples":320}')";
+const std::string kGrating = R"('{"type":"sinusoid","period_nm":1300,"amplitude_nm":80,"size_um":26,"samples":320}')";
 
 std::vector<nlohmann::json> parse_lines(const std::string& text) {
   std::vector<nlohmann::json> lines;
@@ -29,16 +28,22 @@ std::vector<nlohmann::json> parse_lines(const std::string& text) {
 TEST(EvalDiffractionCli, AnswersGoodLinesAndReportsBadOnes) {
   const double x_r = 500.0 / 1300.0, z_r = std::sqrt(1 - x_r * x_r);
   std::ostringstream input;
-  input << R"({"id": "peak", "wi": [0, 0, 1], "wr": [)" << x_r << ", 0, " << z_r << R"(], "lambda_nm": 500})" << "\n"
+  input << R"({"id": "peak", "wi": [0, 0, 1], "wr": [)" << x_r << ", 0, " << z_r << R"(], "lambda_nm": 500})"
+        << "\n"
         << "not json\n"
-        << R"({"id": 2, "wi": [0, 0, 1], "wr": [0, 0, 1]})" << "\n"
-        << R"({"id": 3, "wi": [0, 0, -1], "wr": [0, 0, 1], "lambda_nm": 500})" << "\n"
-        << R"({"id": 4, "wi": [0, 0, 2], "wr": [0, 0, 1], "lambda_nm": 500})" << "\n"
-        << R"({"id": 5, "wi": [0, 0], "wr": [0, 0, 1], "lambda_nm": 500})" << "\n";
+        << R"({"id": 2, "wi": [0, 0, 1], "wr": [0, 0, 1]})"
+        << "\n"
+        << R"({"id": 3, "wi": [0, 0, -1], "wr": [0, 0, 1], "lambda_nm": 500})"
+        << "\n"
+        << R"({"id": 4, "wi": [0, 0, 2], "wr": [0, 0, 1], "lambda_nm": 500})"
+        << "\n"
+        << R"({"id": 5, "wi": [0, 0], "wr": [0, 0, 1], "lambda_nm": 500})"
+        << "\n";
   const double w = -(1 + z_r), sigma = 26000.0;
   const double J1 = std::abs(boost::math::cyl_bessel_j(1, 2 * M_PI / 500 * w * 80));
   for (const char* device : {"cpu", "gpu", "cpu --exact"}) {
-    auto r = run_command(kFacet + " eval diffraction --grating " + kGrating + " --device " + std::string(device), input.str());
+    auto r = run_command(kFacet + " eval diffraction --grating " + kGrating + " --device " + std::string(device),
+                         input.str());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     auto lines = parse_lines(r.out);
     ASSERT_EQ(lines.size(), 6u);
@@ -59,7 +64,8 @@ TEST(EvalDiffractionCli, AbsurdWavelengthFailsOnlyItsLine) {
                             R"({"id": 2, "wi": [0, 0, 1], "wr": [0, 0, 1], "lambda_nm": 1e-6})"
                             "\n";
   for (const char* device : {"cpu", "gpu"}) {
-    auto r = run_command(kFacet + " eval diffraction --grating " + kGrating + " --device " + std::string(device), input);
+    auto r =
+        run_command(kFacet + " eval diffraction --grating " + kGrating + " --device " + std::string(device), input);
     ASSERT_EQ(r.exit_code, 0) << device << ": " << r.err;
     const auto lines = parse_lines(r.out);
     ASSERT_EQ(lines.size(), 2u) << device;
@@ -72,8 +78,9 @@ TEST(EvalDiffractionCli, AbsurdWavelengthFailsOnlyItsLine) {
 }
 
 TEST(EvalDiffractionCli, BadGratingAndExactOnGpuFailWithOneLine) {
-  for (const std::string& args : {std::string(R"(--grating '{"type":"sinusoid"}')"), std::string("--grating /nonexistent.json"),
-                                 "--grating " + kGrating + " --device gpu --exact"}) {
+  for (const std::string& args :
+       {std::string(R"(--grating '{"type":"sinusoid"}')"), std::string("--grating /nonexistent.json"),
+        "--grating " + kGrating + " --device gpu --exact"}) {
     auto r = run_command(kFacet + " eval diffraction " + args, R"({"wi":[0,0,1],"wr":[0,0,1],"lambda_nm":500})");
     EXPECT_NE(r.exit_code, 0) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -114,7 +114,8 @@ TEST(DiffractionBrdf, OrderPowersAreBesselEfficiencies) {
 // below 1e-6. What remains is the variation of G / w^2 and of the Jacobian across the lobe, which
 // grows toward grazing: measured 1.5e-3 at theta_i = 1.3 for k sigma = 251 and falling as 1/(k sigma).
 TEST(DiffractionBrdf, FlatMirrorReflectsSchlickReflectance) {
-  const auto g = test::grating(R"({"type":"sinusoid","period_nm":5000,"amplitude_nm":0,"size_um":20,"samples":64,"ior":1.5,"coherence_um":100})");
+  const auto g = test::grating(
+      R"({"type":"sinusoid","period_nm":5000,"amplitude_nm":0,"size_um":20,"samples":64,"ior":1.5,"coherence_um":100})");
   const auto t = diffraction::build_spectral_tables(g);
   const double lambda = 500.0, width = 1.0 / (2 * kPi / lambda * t.sigma_nm);
   for (double theta_i : {0.0, 0.5, 1.0, 1.3}) {
@@ -247,7 +248,8 @@ TEST(DiffractionBrdf, FiniteOnTheWholeDomainIncludingGrazing) {
       }
   const glm::dvec3 wi(1.0, 0.0, 0.0), wr(-0.6, 0.8, 0.0);
   const auto at_zero = evaluate_taylor(t, {wi, wr, 500.0});
-  const auto near_zero = evaluate_taylor(t, {glm::normalize(wi + glm::dvec3(0, 0, e)), glm::normalize(wr + glm::dvec3(0, 0, e)), 500.0});
+  const auto near_zero =
+      evaluate_taylor(t, {glm::normalize(wi + glm::dvec3(0, 0, e)), glm::normalize(wr + glm::dvec3(0, 0, e)), 500.0});
   EXPECT_NEAR(near_zero.brdf, at_zero.brdf, 1e-9 * at_zero.brdf + 1e-300);
 }
 

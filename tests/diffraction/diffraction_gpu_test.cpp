@@ -47,10 +47,11 @@ double float_error_bound(const diffraction::SpectralTables& t, const Diffraction
 
 TEST(DiffractionGpu, FloatShaderMatchesDoubleKernel) {
   auto context = test::make_validated_context();
-  for (const char* json :
-       {R"({"type":"sinusoid","period_nm":1300,"amplitude_nm":80,"size_um":26,"samples":320})",
-        R"({"type":"fingers","period_nm":800,"amplitude_nm":90,"size_um":8,"samples":128,"finger_length_nm":2000,"coherence_um":3})",
-        R"({"type":"crossed","period_nm":[1000,1500],"amplitude_nm":100,"size_um":12,"samples":192})"}) {
+  for (
+      const char* json :
+      {R"({"type":"sinusoid","period_nm":1300,"amplitude_nm":80,"size_um":26,"samples":320})",
+       R"({"type":"fingers","period_nm":800,"amplitude_nm":90,"size_um":8,"samples":128,"finger_length_nm":2000,"coherence_um":3})",
+       R"({"type":"crossed","period_nm":[1000,1500],"amplitude_nm":100,"size_um":12,"samples":192})"}) {
     const auto g = test::grating(json);
     const auto t = diffraction::build_spectral_tables(g);
     const auto qs = random_queries(3000, 5);
@@ -59,11 +60,12 @@ TEST(DiffractionGpu, FloatShaderMatchesDoubleKernel) {
     double worst_ratio = 0.0;
     for (size_t i = 0; i < qs.size(); ++i) {
       const auto cpu = diffraction::evaluate_taylor(t, qs[i]);
-      const double error = std::abs(test::field_magnitude(gpu[i].P2, t.sigma_nm) -
-                                    test::field_magnitude(cpu.P2, t.sigma_nm));
+      const double error =
+          std::abs(test::field_magnitude(gpu[i].P2, t.sigma_nm) - test::field_magnitude(cpu.P2, t.sigma_nm));
       worst_ratio = std::max(worst_ratio, error / float_error_bound(t, qs[i]));
       // The BRDF is P2 times a smooth factor: relative to the CPU's, within the P2 error plus 1e-5.
-      const double allowed = 2 * float_error_bound(t, qs[i]) / std::max(test::field_magnitude(cpu.P2, t.sigma_nm), 1e-30) + 1e-5;
+      const double allowed =
+          2 * float_error_bound(t, qs[i]) / std::max(test::field_magnitude(cpu.P2, t.sigma_nm), 1e-30) + 1e-5;
       if (cpu.P2 > 1e-6 * 4 * test::kPi * t.sigma_nm * t.sigma_nm) {
         EXPECT_NEAR(gpu[i].brdf / cpu.brdf, 1.0, allowed) << json << " query " << i;
       }
@@ -73,9 +75,9 @@ TEST(DiffractionGpu, FloatShaderMatchesDoubleKernel) {
   }
 }
 
-// docs/errata.md#float-taylor-cancellation: with k w h_s up to 4 pi, float Taylor sums cancel terms ~ x^n / n! up to ~2e4. The
-// GPU must stay within the float bound above against the exact transform (plus the tables'
-// Lagrange tolerance), and the double CPU twin within the tolerance alone.
+// docs/errata.md#float-taylor-cancellation: with k w h_s up to 4 pi, float Taylor sums cancel terms ~ x^n / n! up to
+// ~2e4. The GPU must stay within the float bound above against the exact transform (plus the tables' Lagrange
+// tolerance), and the double CPU twin within the tolerance alone.
 TEST(DiffractionGpu, TallGratingUpToFourPiInFloat) {
   auto context = test::make_validated_context();
   // h_s = 250 nm, lambda = 250 nm: x_max = k * 2 * h_s = 4 pi.
@@ -109,7 +111,8 @@ TEST(DiffractionGpu, TallGratingUpToFourPiInFloat) {
 // Finite, non-negative values over the whole domain, grazing directions (z = 0) included.
 TEST(DiffractionGpu, FiniteOnTheWholeDomain) {
   auto context = test::make_validated_context();
-  const auto g = test::grating(R"({"type":"rectangular","period_nm":700,"amplitude_nm":150,"size_um":7,"samples":140})");
+  const auto g =
+      test::grating(R"({"type":"rectangular","period_nm":700,"amplitude_nm":150,"size_um":7,"samples":140})");
   const auto t = diffraction::build_spectral_tables(g);
   std::vector<DiffractionQuery> qs;
   for (int i = 0; i <= 8; ++i)

@@ -16,8 +16,8 @@
 #include "diffraction_cases.hpp"
 #include "gpu/direct_pass.hpp"
 #include "kernels/shared.hpp"
-#include "scene/camera_frame.hpp"
 #include "plate_scene.hpp"
+#include "scene/camera_frame.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -65,9 +65,9 @@ TEST(DiffractionRender, GpuMatchesTheDoubleTwin) {
 // The dominant wavelength of a linear sRGB colour: the spectral-locus hue (around D65 white) nearest
 // to the colour's, on a 0.25 nm grid of 400..700 nm.
 double dominant_wavelength(glm::dvec3 rgb) {
-  const glm::dmat3 to_srgb = glm::transpose(glm::dmat3(
-      3.2409699419045213, -1.5373831775700935, -0.49861076029300327, -0.96924363628087984, 1.8759675015077206,
-      0.041555057407175612, 0.055630079696993608, -0.20397695888897657, 1.0569715142428786));
+  const glm::dmat3 to_srgb = glm::transpose(glm::dmat3(3.2409699419045213, -1.5373831775700935, -0.49861076029300327,
+                                                       -0.96924363628087984, 1.8759675015077206, 0.041555057407175612,
+                                                       0.055630079696993608, -0.20397695888897657, 1.0569715142428786));
   const glm::dvec3 xyz = glm::inverse(to_srgb) * rgb;
   const glm::dvec2 white(0.3127, 0.3290);
   const auto hue = [&](glm::dvec3 c) {
@@ -100,9 +100,10 @@ TEST(DiffractionRender, PlateColoursFollowTheGratingEquation) {
   int checked = 0;
   double worst = 0.0;
   for (int x = 0; x < scene.camera.width; ++x) {
-    const glm::dvec3 d = kernels::f64::camera_ray_direction(frame.forward, frame.right, frame.up, glm::dvec2(x + 0.5, 0.5),
-                                                            glm::dvec2(scene.camera.width, scene.camera.height));
-    const double predicted = kPeriodNm * std::abs(d.x);  // grating equation, first order
+    const glm::dvec3 d =
+        kernels::f64::camera_ray_direction(frame.forward, frame.right, frame.up, glm::dvec2(x + 0.5, 0.5),
+                                           glm::dvec2(scene.camera.width, scene.camera.height));
+    const double predicted = kPeriodNm * std::abs(d.x);    // grating equation, first order
     if (predicted < 450.0 || predicted > 630.0) continue;  // where the observer sees hue well
     const double measured = dominant_wavelength(glm::dvec3(image.at(x, 0)));
     worst = std::max(worst, std::abs(measured - predicted));
@@ -129,8 +130,8 @@ TEST(DiffractionRender, ExactReferenceAgreesWithTheTaylorTwinWithinTheStratifica
   scene.camera.width = 3;
   scene.camera.height = 2;
   auto& m = std::get<DiffractionMaterial>(scene.materials[0]);
-  m.tolerance = 1e-9;      // Taylor and window errors far below the bound
-  m.wavelengths = 1881;    // 0.25 nm: the twin's trapezoid sum is the integral to ~1e-6
+  m.tolerance = 1e-9;    // Taylor and window errors far below the bound
+  m.wavelengths = 1881;  // 0.25 nm: the twin's trapezoid sum is the integral to ~1e-6
   const int grid = 32;
   const Image twin = cpu::render_direct_cpu(scene, 3, 2);
   cpu::ReferenceOptions options;

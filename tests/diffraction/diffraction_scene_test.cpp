@@ -6,8 +6,8 @@
 #include <variant>
 
 #include "common/error.hpp"
-#include "support/temp_dir.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -77,11 +77,14 @@ TEST(DiffractionScene, BadValuesGiveOneLineErrorsNamingTheKey) {
        "unknown key \"colour\" in materials.plate.grating"},
       {"{\"type\":\"diffraction\"," + g + ",\"tolerance\":0}", "materials.plate.tolerance must lie in [1e-12, 0.1]"},
       {"{\"type\":\"diffraction\"," + g + ",\"tolerance\":0.5}", "materials.plate.tolerance must lie in [1e-12, 0.1]"},
-      {"{\"type\":\"diffraction\"," + g + ",\"illuminant\":\"A\"}", "materials.plate.illuminant must be \"D65\" or \"E\""},
-      {"{\"type\":\"diffraction\"," + g + ",\"wavelengths\":1}", "materials.plate.wavelengths must be an integer in [2, 4096]"},
+      {"{\"type\":\"diffraction\"," + g + ",\"illuminant\":\"A\"}",
+       "materials.plate.illuminant must be \"D65\" or \"E\""},
+      {"{\"type\":\"diffraction\"," + g + ",\"wavelengths\":1}",
+       "materials.plate.wavelengths must be an integer in [2, 4096]"},
       {"{\"type\":\"diffraction\"," + g + ",\"wavelengths\":2.5}", "materials.plate.wavelengths must be an integer"},
       {"{\"type\":\"diffraction\"," + g + ",\"taylor\":0}", "materials.plate.taylor must be an integer in [1, 64]"},
-      {"{\"type\":\"diffraction\"," + g + ",\"base_albedo\":[0.5,1.5,0]}", "materials.plate.base_albedo must have components in [0, 1"},
+      {"{\"type\":\"diffraction\"," + g + ",\"base_albedo\":[0.5,1.5,0]}",
+       "materials.plate.base_albedo must have components in [0, 1"},
       {"{\"type\":\"diffraction\"," + g + ",\"tolerence\":1e-3}", "unknown key \"tolerence\" in materials.plate"},
   };
   for (const auto& c : cases) {

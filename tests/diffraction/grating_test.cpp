@@ -32,7 +32,8 @@ TEST(Grating, SinusoidSamplesTheFormula) {
 }
 
 TEST(Grating, RectangularCrossedAndFingers) {
-  const auto r = grating(R"({"type":"rectangular","period_nm":1000,"amplitude_nm":50,"size_um":10,"samples":200,"duty":0.3})");
+  const auto r =
+      grating(R"({"type":"rectangular","period_nm":1000,"amplitude_nm":50,"size_um":10,"samples":200,"duty":0.3})");
   const double high = std::count(r.height_nm.begin(), r.height_nm.end(), 50.0);
   EXPECT_DOUBLE_EQ(high / r.height_nm.size(), 0.3);
   EXPECT_EQ(std::count(r.height_nm.begin(), r.height_nm.end(), -50.0) + high, double(r.height_nm.size()));
@@ -41,7 +42,8 @@ TEST(Grating, RectangularCrossedAndFingers) {
   const double d = c.sample_nm;
   for (int y : {0, 5, 33})
     for (int x : {0, 9, 50})
-      EXPECT_NEAR(c.height_nm[y * 64 + x], 30 * (std::sin(2 * kPi * x * d / 1000) + std::sin(2 * kPi * y * d / 2000)), 1e-12);
+      EXPECT_NEAR(c.height_nm[y * 64 + x], 30 * (std::sin(2 * kPi * x * d / 1000) + std::sin(2 * kPi * y * d / 2000)),
+                  1e-12);
 
   const auto f = grating(
       R"({"type":"fingers","period_nm":1000,"amplitude_nm":70,"size_um":8,"samples":128,"finger_length_nm":2000,"duty":0.5})");
@@ -65,7 +67,8 @@ TEST(Grating, HeightMapFromExr) {
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) image.set(x, y, glm::vec3(0.25f * float((x + 2 * y) % 5)));
   write_exr(dir / "h.exr", image, {}, ExrPixelType::Float);
-  std::ofstream(dir / "g.json") << R"({"type":"heightmap","path":"h.exr","nm_per_sample":50,"nm_per_unit":40,"channel":"R"})";
+  std::ofstream(dir / "g.json")
+      << R"({"type":"heightmap","path":"h.exr","nm_per_sample":50,"nm_per_unit":40,"channel":"R"})";
   const auto g = diffraction::parse_grating((dir / "g.json").string());  // path relative to the JSON file
   EXPECT_EQ(g.samples, 16);
   EXPECT_DOUBLE_EQ(g.sample_nm, 50.0);
@@ -73,8 +76,8 @@ TEST(Grating, HeightMapFromExr) {
   // Colour PNGs are not height maps; non-square maps are rejected.
   std::vector<std::uint8_t> rgb(16 * 16 * 3, 7);
   write_png_rgb8(dir / "c.png", 16, 16, rgb);
-  EXPECT_THROW(diffraction::parse_grating(
-                   R"({"type":"heightmap","path":")" + (dir / "c.png").string() + R"(","nm_per_sample":50,"nm_per_unit":1})"),
+  EXPECT_THROW(diffraction::parse_grating(R"({"type":"heightmap","path":")" + (dir / "c.png").string() +
+                                          R"(","nm_per_sample":50,"nm_per_unit":1})"),
                Error);
   write_exr(dir / "wide.exr", Image(16, 8), {}, ExrPixelType::Float);
   EXPECT_THROW(diffraction::parse_grating(R"({"type":"heightmap","path":")" + (dir / "wide.exr").string() +
@@ -96,7 +99,8 @@ TEST(Grating, HeightMapFromSixteenBitPng) {
   const auto g = diffraction::parse_grating(R"({"type":"heightmap","path":")" + path.string() +
                                             R"(","nm_per_sample":25,"nm_per_unit":0.01})");
   ASSERT_EQ(g.samples, 32);
-  for (size_t i : {size_t(0), size_t(5), size_t(777), size_t(1023)}) EXPECT_NEAR(g.height_nm[i], 0.01 * codes[i], 1e-9) << i;
+  for (size_t i : {size_t(0), size_t(5), size_t(777), size_t(1023)})
+    EXPECT_NEAR(g.height_nm[i], 0.01 * codes[i], 1e-9) << i;
   std::filesystem::remove(path);
 }
 
@@ -126,23 +130,27 @@ TEST(Grating, HeightMapFromGsf) {
 
 TEST(Grating, BadFieldsAreOneLineErrors) {
   const std::string ok = R"("period_nm":1000,"amplitude_nm":50,"size_um":10,"samples":200)";
-  for (const std::string& json : {
-           std::string(R"({"type":"zigzag",)") + ok + "}",
-           std::string(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":50,"samples":200})"),   // no size
-           std::string(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":50,"size_um":10,"samples":4})"),
-           std::string(R"({"type":"sinusoid","period_nm":1300,"amplitude_nm":50,"size_um":10,"samples":200})"),  // 7.7 periods
-           std::string(R"({"type":"sinusoid","period_nm":100,"amplitude_nm":50,"size_um":10,"samples":200})"),   // 2 samples/period
-           std::string(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":-5,"size_um":10,"samples":200})"),
-           std::string(R"({"type":"rectangular","duty":1.0,)") + ok + "}",
-           std::string(R"({"type":"sinusoid","amplitde_nm":3,)") + ok + "}",  // unknown key
-           std::string(R"({"type":"sinusoid","coherence_um":1,)") + ok + "}",  // below a quarter patch
-           std::string(R"({"type":"sinusoid","ior":0.5,)") + ok + "}",
-           std::string(R"({"type":"crossed","period_nm":[1000],"amplitude_nm":50,"size_um":10,"samples":200})"),
-           std::string(R"({"type":"fingers","finger_length_nm":3000,)") + ok + "}",  // 10 um / 6 um not whole
-           std::string(R"({"type":"heightmap","path":"/nonexistent.exr","nm_per_sample":1,"nm_per_unit":1})"),
-           std::string(R"({"type":"heightmap","path":"/nonexistent.exr"})"),  // no units
-           std::string(R"({"type":"sinusoid",)"),
-       }) {
+  for (
+      const std::string& json : {
+          std::string(R"({"type":"zigzag",)") + ok + "}",
+          std::string(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":50,"samples":200})"),  // no size
+          std::string(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":50,"size_um":10,"samples":4})"),
+          std::string(
+              R"({"type":"sinusoid","period_nm":1300,"amplitude_nm":50,"size_um":10,"samples":200})"),  // 7.7 periods
+          std::string(
+              R"({"type":"sinusoid","period_nm":100,"amplitude_nm":50,"size_um":10,"samples":200})"),  // 2
+                                                                                                       // samples/period
+          std::string(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":-5,"size_um":10,"samples":200})"),
+          std::string(R"({"type":"rectangular","duty":1.0,)") + ok + "}",
+          std::string(R"({"type":"sinusoid","amplitde_nm":3,)") + ok + "}",   // unknown key
+          std::string(R"({"type":"sinusoid","coherence_um":1,)") + ok + "}",  // below a quarter patch
+          std::string(R"({"type":"sinusoid","ior":0.5,)") + ok + "}",
+          std::string(R"({"type":"crossed","period_nm":[1000],"amplitude_nm":50,"size_um":10,"samples":200})"),
+          std::string(R"({"type":"fingers","finger_length_nm":3000,)") + ok + "}",  // 10 um / 6 um not whole
+          std::string(R"({"type":"heightmap","path":"/nonexistent.exr","nm_per_sample":1,"nm_per_unit":1})"),
+          std::string(R"({"type":"heightmap","path":"/nonexistent.exr"})"),  // no units
+          std::string(R"({"type":"sinusoid",)"),
+      }) {
     try {
       diffraction::parse_grating(json);
       ADD_FAILURE() << "accepted " << json;

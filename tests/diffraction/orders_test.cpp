@@ -123,7 +123,8 @@ TEST(Orders, LatticeBinsCarryTheWholeWindowSum) {
     ASSERT_GT(largest, 0.0);
     for (const auto& [lattice, every] : values) EXPECT_NEAR(lattice, every, 1e-9 * largest) << json;
     for (double a = -0.05; a <= 0.05; a += 1e-4) {  // bins visited per axis: at most 2r / P + 1 of 2r + 1
-      const k64::DiffractionWindowBins bins = k64::diffraction_window_bins(glm::dvec2(a, 0.0), c.tables.period_nm, c.tables.r, stride);
+      const k64::DiffractionWindowBins bins =
+          k64::diffraction_window_bins(glm::dvec2(a, 0.0), c.tables.period_nm, c.tables.r, stride);
       EXPECT_LE(bins.count.x, 2 * c.tables.r / stride.x + 1) << json;
       if (stride.x > 1) most_lattice_bins = std::max(most_lattice_bins, bins.count.x);
     }
@@ -172,7 +173,8 @@ TEST(Orders, IntervalsHoldEveryReachingWavelength) {
         for (double l = kCieLambdaMinNm; l <= kCieLambdaMaxNm; l += 0.02)
           if (reaches(l)) {
             EXPECT_TRUE(in_span) << q << " j " << jx << "," << jy;
-            EXPECT_TRUE(I.nodes > 0 && l >= I.lambda_lo - 1e-9 && l <= hi + 1e-9) << q << " j " << jx << "," << jy << " " << l;
+            EXPECT_TRUE(I.nodes > 0 && l >= I.lambda_lo - 1e-9 && l <= hi + 1e-9)
+                << q << " j " << jx << "," << jy << " " << l;
           }
         for (int i = 0; i < I.nodes; ++i) EXPECT_TRUE(reaches(k64::diffraction_order_lambda(I, i))) << q;
       }
@@ -197,7 +199,8 @@ TEST(Orders, ColoursMatchTheSpectralPath) {
     for (int q = 0; q < 60; ++q) {
       const glm::dvec3 wi = direction(0.6 * unit(rng) - 0.3, 0.2 * unit(rng) - 0.1);
       glm::dvec2 uv(2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0);
-      if (q % 3 != 2) uv = glm::dvec2((q % 2 ? 1 : -1) * (400.0 + 300.0 * unit(rng)) / period_x, 0.002 * (unit(rng) - 0.5));
+      if (q % 3 != 2)
+        uv = glm::dvec2((q % 2 ? 1 : -1) * (400.0 + 300.0 * unit(rng)) / period_x, 0.002 * (unit(rng) - 0.5));
       const glm::dvec2 r = -uv - glm::dvec2(wi);
       if (glm::dot(r, r) >= 1.0) continue;
       const glm::dvec3 wr = direction(r.x, r.y);
@@ -208,11 +211,13 @@ TEST(Orders, ColoursMatchTheSpectralPath) {
     for (const auto& [got, want] : results) {
       const double scale = std::max({std::abs(want.x), std::abs(want.y), std::abs(want.z)});
       for (int ch = 0; ch < 3; ++ch) {
-        EXPECT_LE(std::abs(got[ch] - want[ch]), (2 * kTolerance + 1e-4) * scale + kTolerance * kTolerance * peak) << json;
+        EXPECT_LE(std::abs(got[ch] - want[ch]), (2 * kTolerance + 1e-4) * scale + kTolerance * kTolerance * peak)
+            << json;
         if (scale > 1e-3 * peak) worst = std::max(worst, std::abs(got[ch] - want[ch]) / scale);
       }
     }
-    std::printf("%s: worst |orders - spectral| / brightest channel (queries above 1e-3 of the peak) = %.3g\n", json, worst);
+    std::printf("%s: worst |orders - spectral| / brightest channel (queries above 1e-3 of the peak) = %.3g\n", json,
+                worst);
   }
 }
 
@@ -299,8 +304,8 @@ TEST(Orders, RandomHeightFieldFallsBackToSpectral) {
   TableRange range;
   range.lambda_min_nm = kCieLambdaMinNm;
   const SpectralTables tables = build_spectral_tables(g, range);
-  const OrderWavelengths plan =
-      plan_order_wavelengths(g, tables, kTolerance, Illuminant::D65, diffraction_wavelength_samples(tables, kTolerance));
+  const OrderWavelengths plan = plan_order_wavelengths(g, tables, kTolerance, Illuminant::D65,
+                                                       diffraction_wavelength_samples(tables, kTolerance));
   EXPECT_EQ(patch_repeats(g).x, 1);
   EXPECT_EQ(patch_repeats(g).y, 1);
   EXPECT_FALSE(plan.restricted);
@@ -308,8 +313,9 @@ TEST(Orders, RandomHeightFieldFallsBackToSpectral) {
   const glm::dvec3 wi = direction(0.2, 0.1);
   for (double x : {-0.5, -0.2, 0.1}) {
     const glm::dvec3 wr = direction(x, 0.05);
-    const glm::dvec3 want =
-        integrate_linear_srgb(plan.fallback, [&](double l) { return evaluate_taylor(tables, {wi, wr, l}).brdf; });
+    const glm::dvec3 want = integrate_linear_srgb(plan.fallback, [&](double l) {
+      return evaluate_taylor(tables, {wi, wr, l}).brdf;
+    });
     EXPECT_EQ(evaluate_orders(tables, plan, wi, wr), want);
   }
 }

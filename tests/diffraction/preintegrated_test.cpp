@@ -144,7 +144,9 @@ TEST(Preintegrated, EqualsThePerWavelengthPathAtTheNodes) {
       const glm::dvec3 got = to_xyz(evaluate_preintegrated(pre, kLight, wr));
       const glm::dvec3 bound = storage_bound(c, pre, kLight, wr) + 1e-12 * max_component(glm::abs(want));
       for (int ch = 0; ch < 3; ++ch) {
-        EXPECT_LE(std::abs(got[ch] - want[ch]), bound[ch] + 1e-12) << json << " node " << uv.x << "," << uv.y << " want " << want[ch] << " got " << got[ch] << " E " << envelope(c, kLight, wr).value()[ch];
+        EXPECT_LE(std::abs(got[ch] - want[ch]), bound[ch] + 1e-12)
+            << json << " node " << uv.x << "," << uv.y << " want " << want[ch] << " got " << got[ch] << " E "
+            << envelope(c, kLight, wr).value()[ch];
         if (bound[ch] > 0) worst = std::max(worst, std::abs(got[ch] - want[ch]) / bound[ch]);
       }
     }
@@ -200,8 +202,9 @@ TEST(Preintegrated, AgreesWithTheExactReference) {
   double peak = 0.0, pre_error = 0.0, spectral_error = 0.0;
   for (int q = 0; q < 20; ++q) {
     const glm::dvec3 wr = view(unit(rng), unit(rng));
-    const glm::dvec3 reference =
-        integrate_linear_srgb(c.samples, [&](double l) { return exact.evaluate({kLight, wr, l}).brdf; });
+    const glm::dvec3 reference = integrate_linear_srgb(c.samples, [&](double l) {
+      return exact.evaluate({kLight, wr, l}).brdf;
+    });
     const glm::dvec3 a = evaluate_preintegrated(pre, kLight, wr), b = spectral_srgb(c, kLight, wr);
     peak = std::max(peak, max_component(glm::abs(reference)));
     pre_error = std::max(pre_error, max_component(glm::abs(a - reference)));
@@ -216,7 +219,8 @@ TEST(Preintegrated, AgreesWithTheExactReference) {
 // A tall grating over a wide range of w needs float storage (halves would lose the budget to the
 // polynomial's cancellation); at the nodes it then matches the per-wavelength path to float rounding.
 TEST(Preintegrated, TallGratingsStoreFloats) {
-  Case c = make_case(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":300,"size_um":4,"samples":64,"coherence_um":2})");
+  Case c =
+      make_case(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":300,"size_um":4,"samples":64,"coherence_um":2})");
   c.domain.uv_max = c.domain.uv_min + glm::dvec2(0.05, 0.05);  // a small window of the scene keeps the test fast
   const PreintegratedLayout layout = preintegrated_layout(c.tables, c.samples, c.domain, {});
   const PreintegratedTables pre = build_preintegrated_tables(c.tables, c.samples, c.domain);
@@ -245,7 +249,8 @@ TEST(Preintegrated, FloatTwinMatchesDouble) {
   const Case c = make_case(kSinusoid);
   const PreintegratedTables pre = build_preintegrated_tables(c.tables, c.samples, c.domain);
   namespace f32 = kernels::f32;
-  const f32::PreintegratedGrid grid(glm::vec2(pre.origin), glm::vec2(pre.spacing), pre.nu, pre.nv, pre.terms, pre.words);
+  const f32::PreintegratedGrid grid(glm::vec2(pre.origin), glm::vec2(pre.spacing), pre.nu, pre.nv, pre.terms,
+                                    pre.words);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int q = 0; q < 100; ++q) {
@@ -263,7 +268,8 @@ TEST(Preintegrated, FloatTwinMatchesDouble) {
       }
       acc = f32::preintegrated_horner_step(acc, g.w - float(pre.w_centre), cell, t[0], t[1], t[2], t[3]);
     }
-    const glm::dvec3 got = to_xyz(glm::dvec3(f32::preintegrated_linear_srgb(g, acc, float(pre.sigma_nm), float(pre.R0))));
+    const glm::dvec3 got =
+        to_xyz(glm::dvec3(f32::preintegrated_linear_srgb(g, acc, float(pre.sigma_nm), float(pre.R0))));
     const glm::dvec3 want = to_xyz(evaluate_preintegrated(pre, kLight, wr));
     const glm::dvec3 bound = float_bound(c, pre, wr, want);
     for (int ch = 0; ch < 3; ++ch) EXPECT_LE(std::abs(got[ch] - want[ch]), bound[ch]) << q;

@@ -31,9 +31,10 @@ std::complex<double> direct_dft(const diffraction::Grating& g, const diffraction
 // and of a rectangular grating, on 16 x 16 and 24 x 24 patches. Both sides are double; 1e-13 is a
 // few hundred ulps of the O(1) coefficients, the rounding of an M^2-term sum.
 TEST(SpectralTables, MatchTheDirectDftSum) {
-  for (const char* json :
-       {R"({"type":"fingers","period_nm":1000,"amplitude_nm":200,"size_um":4,"samples":16,"finger_length_nm":1000,"duty":0.6})",
-        R"({"type":"rectangular","period_nm":1000,"amplitude_nm":120,"size_um":3,"samples":24,"duty":0.3})"}) {
+  for (
+      const char* json :
+      {R"({"type":"fingers","period_nm":1000,"amplitude_nm":200,"size_um":4,"samples":16,"finger_length_nm":1000,"duty":0.6})",
+       R"({"type":"rectangular","period_nm":1000,"amplitude_nm":120,"size_um":3,"samples":24,"duty":0.3})"}) {
     const auto g = test::grating(json);
     const auto t = build_spectral_tables(g, {.lambda_min_nm = 300.0});
     ASSERT_GE(t.N, 3);
@@ -43,12 +44,14 @@ TEST(SpectralTables, MatchTheDirectDftSum) {
         for (int jx = -t.J; jx <= t.J; ++jx) {
           const auto e = kernels::f64::diffraction_table_entry(n, jx, jy, t.J, t.stored_terms);
           ASSERT_TRUE(e.valid);
-          const std::complex<double> stored = e.conjugate ? std::conj(t.coefficients[e.index]) : t.coefficients[e.index];
+          const std::complex<double> stored =
+              e.conjugate ? std::conj(t.coefficients[e.index]) : t.coefficients[e.index];
           worst = std::max(worst, std::abs(stored - direct_dft(g, t, n, jx, jy)));
         }
     EXPECT_LT(worst, 1e-13) << json;
     // The height is mean-free and normalised: H_0 = delta_j0, H_1(0) = 0, max |h| = h_s.
-    EXPECT_NEAR(std::abs(t.coefficients[kernels::f64::diffraction_table_entry(1, 0, 0, t.J, t.stored_terms).index]), 0.0, 1e-15);
+    EXPECT_NEAR(std::abs(t.coefficients[kernels::f64::diffraction_table_entry(1, 0, 0, t.J, t.stored_terms).index]),
+                0.0, 1e-15);
   }
 }
 
@@ -91,7 +94,8 @@ TEST(SpectralTables, BadRangesAreErrors) {
   EXPECT_THROW(build_spectral_tables(g, {.w_max = 3.0}), Error);
   EXPECT_THROW(build_spectral_tables(g, {.tolerance = 0.0}), Error);
   // A grating so tall that the series would need more than 64 terms.
-  const auto tall = test::grating(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":5000,"size_um":4,"samples":16})");
+  const auto tall =
+      test::grating(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":5000,"size_um":4,"samples":16})");
   EXPECT_THROW(build_spectral_tables(tall), Error);
 }
 

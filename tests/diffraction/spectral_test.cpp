@@ -1,5 +1,5 @@
-// The compiled-in CIE tables against the published checks (data/cie: CIE 1931 2° observer, ISO/CIE 11664-1; D65, ISO/CIE 11664-2)
-// and the wavelength integration against the 1 nm sums.
+// The compiled-in CIE tables against the published checks (data/cie: CIE 1931 2° observer, ISO/CIE 11664-1; D65,
+// ISO/CIE 11664-2) and the wavelength integration against the 1 nm sums.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,7 +44,8 @@ TEST(Spectral, WhitePointsAndSrgbWhite) {
   EXPECT_NEAR(e.x, 1.0 / 3.0, 1e-3);
   EXPECT_NEAR(e.y, 1.0 / 3.0, 1e-3);
   // The matrix maps the sRGB primaries' white Y = 1 exactly to (1, 1, 1) (rational derivation).
-  const glm::dvec3 w = kernels::f64::spectral_xyz_to_linear_srgb({0.3127 / 0.3290, 1.0, (1 - 0.3127 - 0.3290) / 0.3290});
+  const glm::dvec3 w =
+      kernels::f64::spectral_xyz_to_linear_srgb({0.3127 / 0.3290, 1.0, (1 - 0.3127 - 0.3290) / 0.3290});
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(w[c], 1.0, 1e-14);
 }
 
@@ -58,7 +59,8 @@ TEST(Spectral, ObserverSpacingMeetsItsTolerance) {
   for (double tol : {1e-2, 1e-3, 1e-4}) {
     const double h = observer_spacing(tol);
     const auto s = wavelength_samples(h);
-    const glm::dvec3 white = integrate_xyz(s, [](double) { return 1.0; }) - integrate_xyz(fine, [](double) { return 1.0; });
+    const glm::dvec3 white =
+        integrate_xyz(s, [](double) { return 1.0; }) - integrate_xyz(fine, [](double) { return 1.0; });
     EXPECT_LE(std::max({std::abs(white.x), std::abs(white.y), std::abs(white.z)}), tol) << h;
     const glm::dvec3 d = integrate_xyz(s, smooth) - reference;
     EXPECT_LE(std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}), 5 * tol) << "spacing " << h;

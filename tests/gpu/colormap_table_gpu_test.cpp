@@ -140,11 +140,13 @@ TEST(ColormapTableGpu, GpuLookupMatchesTheCpuTableAndTheExactFilter) {
     worst_vs_cpu_table = std::max(worst_vs_cpu_table, vs_table / float_bound);
     worst_vs_exact = std::max(worst_vs_exact, vs_exact);
     ASSERT_LE(vs_table, float_bound) << "map " << m << " mu " << mu << " sigma " << sigma;
-    ASSERT_LE(vs_exact, gpu::kColormapTableTolerance + float_bound) << "map " << m << " mu " << mu << " sigma " << sigma;
+    ASSERT_LE(vs_exact, gpu::kColormapTableTolerance + float_bound)
+        << "map " << m << " mu " << mu << " sigma " << sigma;
   }
-  std::printf("GPU table vs CPU table: worst %.3f of the float bound; vs exact filter: %.2e (tolerance %.1e); "
-              "GPU exact vs CPU exact: %.2e\n",
-              worst_vs_cpu_table, worst_vs_exact, gpu::kColormapTableTolerance, worst_exact_gpu);
+  std::printf(
+      "GPU table vs CPU table: worst %.3f of the float bound; vs exact filter: %.2e (tolerance %.1e); "
+      "GPU exact vs CPU exact: %.2e\n",
+      worst_vs_cpu_table, worst_vs_exact, gpu::kColormapTableTolerance, worst_exact_gpu);
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
@@ -165,7 +167,8 @@ TEST(ColormapTableGpu, ExactFilterOfALongMapMatchesTheCpu) {
   const std::vector<vec4> gpu = GaussianProbe(*context, scene, false).run(probes, 3);
   double worst = 0;
   for (size_t i = 0; i < probes.size(); ++i) {
-    const double error = max_channel(glm::dvec3(gpu[i]) - precompute::filtered_colormap_exact(map, probes[i].x, probes[i].y));
+    const double error =
+        max_channel(glm::dvec3(gpu[i]) - precompute::filtered_colormap_exact(map, probes[i].x, probes[i].y));
     worst = std::max(worst, error);
     ASSERT_LE(error, 2e-5) << "mu " << probes[i].x << " sigma " << probes[i].y;
   }

@@ -89,8 +89,11 @@ TEST(DirectPass, MicroflakeMaterialsMatchCpu) {
   auto context = test::make_validated_context();
   Scene scene = test::lambert_spheres_scene();
   scene.spheres.clear();
-  const std::pair<Ndf, double> flakes[] = {{Ndf::Beckmann, 0.3}, {Ndf::Ggx, 0.05}, {Ndf::Ellipsoidal, 0.9},
-                                           {Ndf::SphericalGaussian, 0.2}, {Ndf::SphericalGaussian, 50.0}};
+  const std::pair<Ndf, double> flakes[] = {{Ndf::Beckmann, 0.3},
+                                           {Ndf::Ggx, 0.05},
+                                           {Ndf::Ellipsoidal, 0.9},
+                                           {Ndf::SphericalGaussian, 0.2},
+                                           {Ndf::SphericalGaussian, 50.0}};
   for (int i = 0; i < 5; ++i) {
     scene.materials.push_back(MicroflakeMaterial{flakes[i].first, flakes[i].second, {0.9, 0.7, 0.5}});
     scene.spheres.push_back({{-2.0 + i, 0.45, 0.0}, 0.45, static_cast<uint32_t>(scene.materials.size() - 1)});

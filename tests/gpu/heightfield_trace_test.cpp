@@ -77,8 +77,8 @@ TEST(HeightFieldTrace, SilhouettesAndSelfShadowsAtGrazingViews) {
 }
 
 // GPU ss:K against a 16 x 16 jittered reference: the error falls as K grows, on every shipped
-// microsurface scene (at 32 x 18 the reference's noise is far below the ss:4 error) (the flat-plane shading of earlier versions stalled at
-// RMSE 0.1 on the terrain whatever K).
+// microsurface scene (at 32 x 18 the reference's noise is far below the ss:4 error) (the flat-plane shading of earlier
+// versions stalled at RMSE 0.1 on the terrain whatever K).
 TEST(HeightFieldTrace, SupersamplingConvergesToTheReference) {
   auto context = test::make_validated_context();
   for (const char* name : {"microsurface_terrain", "microsurface_slope", "microsurface_glossy"}) {
@@ -90,7 +90,8 @@ TEST(HeightFieldTrace, SupersamplingConvergesToTheReference) {
     const Image ref = cpu::render_reference(s, options);
     double previous = 0.0;
     for (int k : {1, 2, 4}) {
-      const double e = rmse(gpu::render_direct(*context, s, 32, 18, gpu::RenderMethod::parse("ss:" + std::to_string(k))), ref);
+      const double e =
+          rmse(gpu::render_direct(*context, s, 32, 18, gpu::RenderMethod::parse("ss:" + std::to_string(k))), ref);
       std::printf("%s ss:%d RMSE %.4f\n", name, k, e);
       if (k > 1) {
         EXPECT_LT(e, 0.75 * previous) << name << " ss:" << k;

@@ -60,8 +60,8 @@ Errors errors(vk::Context& context, const Scene& s, const char* label, bool row_
   };
   Errors e{error("naive"), error("mip"), error("colormip"), error("ss:4"), error("filtered")};
   std::printf("%s %s vs %dx%d reference: naive %.4f mip %.4f colormip %.4f ss:4 %.4f filtered %.4f\n", label,
-              row_means ? "row-mean error" : "RMSE", kReferenceGrid, kReferenceGrid, e.naive, e.mip, e.colormip,
-              e.ss4, e.filtered);
+              row_means ? "row-mean error" : "RMSE", kReferenceGrid, kReferenceGrid, e.naive, e.mip, e.colormip, e.ss4,
+              e.filtered);
   return e;
 }
 

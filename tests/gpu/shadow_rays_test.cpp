@@ -33,7 +33,8 @@ void expect_gpu_matches_cpu(const Scene& scene) {
     const double e = largest(glm::dvec3(gpu.at(i)) - glm::dvec3(cpu.at(i)));
     if (e <= 1e-4) ++within, worst = std::max(worst, e);
   }
-  std::cout << "[ measured ] " << within << " of " << gpu.pixel_count() << " pixels within 1e-4, worst " << worst << "\n";
+  std::cout << "[ measured ] " << within << " of " << gpu.pixel_count() << " pixels within 1e-4, worst " << worst
+            << "\n";
   EXPECT_GE(static_cast<double>(within), 0.99 * static_cast<double>(gpu.pixel_count()));
   EXPECT_EQ(context->validation_message_count(), 0u);
 }

@@ -48,12 +48,14 @@ TEST(Supersampling, StrataEqualTheNaiveFrameAtKTimesTheResolution) {
     const double e = largest(glm::dvec3(strata.at(i)) - glm::dvec3(reference.at(i)));
     if (e <= 1e-4) ++within, worst = std::max(worst, e);
   }
-  std::cout << "[ measured ] " << within << " of " << strata.pixel_count() << " pixels within 1e-4, worst " << worst << "\n";
+  std::cout << "[ measured ] " << within << " of " << strata.pixel_count() << " pixels within 1e-4, worst " << worst
+            << "\n";
   EXPECT_GE(static_cast<double>(within), 0.99 * static_cast<double>(strata.pixel_count()));
   // Supersampling did something: edges are smoother than the 1-ray frame's.
   const Image one_ray = gpu::render_direct(*context, scene, kWidth, kHeight);
   size_t differing = 0;
-  for (size_t i = 0; i < strata.pixel_count(); ++i) differing += largest(glm::dvec3(strata.at(i)) - glm::dvec3(one_ray.at(i))) > 1e-3;
+  for (size_t i = 0; i < strata.pixel_count(); ++i)
+    differing += largest(glm::dvec3(strata.at(i)) - glm::dvec3(one_ray.at(i))) > 1e-3;
   EXPECT_GT(differing, strata.pixel_count() / 50);
   EXPECT_EQ(context->validation_message_count(), 0u);
 }

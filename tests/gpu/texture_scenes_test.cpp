@@ -55,13 +55,14 @@ TEST(TextureScenes, FilteredBeatsNaiveAndMipOnEveryTexturedScene) {
       options.seed = 7;
       const Image reference = cpu::render_reference(scene, options);
       for (int i = 0; i < 4; ++i)
-        error[i] = rmse(gpu::render_direct(*context, scene, kWidth, kHeight, gpu::RenderMethod::parse(methods[i])), reference);
+        error[i] =
+            rmse(gpu::render_direct(*context, scene, kWidth, kHeight, gpu::RenderMethod::parse(methods[i])), reference);
     } catch (const Error& e) {
       std::printf("%s: skipped (%s)\n", name.c_str(), e.what());
       continue;
     }
-    std::printf("%s: RMSE naive %.4f mip %.4f colormip %.4f filtered %.4f\n", name.c_str(), error[0], error[1], error[2],
-                error[3]);
+    std::printf("%s: RMSE naive %.4f mip %.4f colormip %.4f filtered %.4f\n", name.c_str(), error[0], error[1],
+                error[2], error[3]);
     EXPECT_LT(error[3], 0.6 * error[0]) << name;
     EXPECT_LT(error[3], error[1]) << name;
     EXPECT_LT(error[3], 1.6 * error[2]) << name;

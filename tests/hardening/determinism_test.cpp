@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
-#include "support/temp_dir.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {

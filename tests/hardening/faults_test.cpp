@@ -2,16 +2,16 @@
 // one "facet: error: ..." line, and leaves no output and no temporary file behind (docs/hardening.md).
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
-#include "support/temp_dir.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -83,9 +83,9 @@ TEST_F(Faults, SigtermDuringRender) {
 
 TEST_F(Faults, SigintAndSigtermDuringReference) {
   for (const std::string signal : {"INT", "TERM"}) {
-    const auto r = interrupted(kFacet + " reference " + kScene + " -o " + out() +
-                                   " --width 1024 --height 576 --grid 32 --threads 2",
-                               signal, 2);
+    const auto r = interrupted(
+        kFacet + " reference " + kScene + " -o " + out() + " --width 1024 --height 576 --grid 32 --threads 2", signal,
+        2);
     EXPECT_EQ(r.exit_code, signal == "INT" ? 130 : 143) << r.err;  // the same statuses as `render`
     expect_clean_failure(r, "interrupt");
   }
@@ -93,20 +93,19 @@ TEST_F(Faults, SigintAndSigtermDuringReference) {
 
 TEST_F(Faults, NoVulkanDevice) {
   const std::string no_driver = "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json ";
-  expect_clean_failure(run_command(no_driver + kFacet + " render " + kScene + " -o " + out() + " --width 16 --height 9"),
-                       "Vulkan");
+  expect_clean_failure(
+      run_command(no_driver + kFacet + " render " + kScene + " -o " + out() + " --width 16 --height 9"), "Vulkan");
   expect_clean_failure(
       run_command(kFacet + " render " + kScene + " -o " + out() + " --width 16 --height 9 --device nosuch"), "nosuch");
 }
 
 TEST_F(Faults, AbsurdSizesAreRefusedBeforeAllocation) {
   // Each would need tens of GB to hundreds of TB; refused by the documented bounds (docs/limits.md).
-  for (const std::string& args : {" render " + kScene + " -o " + out() + " --width 100000 --height 100000",
-                                 " render " + kScene + " -o " + out() + " --width -5",
-                                 " reference " + kScene + " -o " + out() + " --grid 100000",
-                                 " make heightfield -o " + out() + " --size 100000",
-                                 " make noise -o " + out() + " --width 3000000000",
-                                 " make noise -o " + out() + " --size 65536"})
+  for (const std::string& args :
+       {" render " + kScene + " -o " + out() + " --width 100000 --height 100000",
+        " render " + kScene + " -o " + out() + " --width -5",
+        " reference " + kScene + " -o " + out() + " --grid 100000", " make heightfield -o " + out() + " --size 100000",
+        " make noise -o " + out() + " --width 3000000000", " make noise -o " + out() + " --size 65536"})
     expect_clean_failure(run_command(kFacet + args), "");
 }
 
@@ -121,8 +120,8 @@ TEST_F(Faults, FramesBeyondTheStorageBufferRangeRenderWhole) {
   const fs::path large = dir_ / "large.exr", small = dir_ / "small.exr";
   for (const auto& [file, size] : {std::pair{large, " --width 2900 --height 2900"},
                                    std::pair{small, " --width 290 --height 290 --method ss:10"}}) {
-    const auto r = run_command(kFacet + " render " + kScene + " -o " + file.string() + size +
-                               " --pixel-type float --no-preview");
+    const auto r =
+        run_command(kFacet + " render " + kScene + " -o " + file.string() + size + " --pixel-type float --no-preview");
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   const Image big = read_exr(large), reference = read_exr(small);

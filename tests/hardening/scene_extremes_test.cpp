@@ -27,14 +27,29 @@ const fs::path kScenes = fs::path(FACET_SOURCE_DIR) / "scenes";
 // document, so they are tried too: the validation must not rely on the parser.
 std::vector<Json> extreme_numbers() {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  return {Json(-1), Json(0), Json(0.5), Json(1e-308), Json(1e308), Json(-1e308), Json(inf), Json(-inf),
-          Json(std::numeric_limits<double>::quiet_NaN()), Json(2147483648LL), Json(18446744073709551615ULL), Json("1"),
-          Json(nullptr), Json::array()};
+  return {Json(-1),
+          Json(0),
+          Json(0.5),
+          Json(1e-308),
+          Json(1e308),
+          Json(-1e308),
+          Json(inf),
+          Json(-inf),
+          Json(std::numeric_limits<double>::quiet_NaN()),
+          Json(2147483648LL),
+          Json(18446744073709551615ULL),
+          Json("1"),
+          Json(nullptr),
+          Json::array()};
 }
 
 std::vector<Json> extreme_strings() {
-  return {Json(""), Json(std::string(100000, 'x')), Json(std::string("a\0b", 3)), Json("../../../../etc/passwd"),
-          Json(1), Json(nullptr)};
+  return {Json(""),
+          Json(std::string(100000, 'x')),
+          Json(std::string("a\0b", 3)),
+          Json("../../../../etc/passwd"),
+          Json(1),
+          Json(nullptr)};
 }
 
 // The JSON pointers of the number and string leaves, one per shape: array elements with the same

@@ -6,9 +6,9 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfMultiPartOutputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfPartType.h>
-#include <OpenEXR/ImfOutputFile.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -136,7 +136,8 @@ TEST(ExrIo, WriteIntoMissingDirectoriesCreatesThem) {
   write_exr(path, Image(2, 2), {}, ExrPixelType::Float);
   EXPECT_EQ(read_exr(path).width, 2);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"missing"});
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(path.parent_path()), std::filesystem::directory_iterator()), 1);
+  EXPECT_EQ(
+      std::distance(std::filesystem::directory_iterator(path.parent_path()), std::filesystem::directory_iterator()), 1);
 }
 
 TEST(ExrIo, FailedWriteWhereParentIsAFileLeavesNothing) {

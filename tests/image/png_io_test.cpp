@@ -173,7 +173,7 @@ TEST(PngIo, HostileChunkLengthCostsNoMemory) {
     }
     return 1;
   });
-  EXPECT_EQ(run.exit_code, 0);  // 1: accepted, 2: not one line
+  EXPECT_EQ(run.exit_code, 0);                // 1: accepted, 2: not one line
   EXPECT_LT(run.rss_growth_kib, 256 * 1024);  // 1.7 GB before the fix
 }
 

@@ -44,8 +44,8 @@ TEST(CrossSectionGpu, FastKernelsMatchExactOverTheDomain) {
     ASSERT_TRUE(std::isfinite(gpu) && gpu >= 0.0) << q.ndf << " " << param << " " << u;
     const double error = std::abs(gpu - exact) / std::max(1.0, exact);
     worst[q.ndf] = std::max(worst[q.ndf], error);
-    EXPECT_LE(error, kTolerance) << "ndf " << q.ndf << " param " << param << " u " << u << ": gpu " << gpu
-                                 << " exact " << exact;
+    EXPECT_LE(error, kTolerance) << "ndf " << q.ndf << " param " << param << " u " << u << ": gpu " << gpu << " exact "
+                                 << exact;
   }
   std::printf("GPU fast vs exact, worst |error|/max(1, sigma): beckmann %.2g ggx %.2g kk %.2g sg %.2g\n", worst[0],
               worst[1], worst[2], worst[3]);

@@ -38,8 +38,10 @@ double kk_D(double b, double th) {
 
 double reference_sigma(int ndf, double p, double u) {
   double horizon = p > 1.0 ? 1.0 / p : 0.0;
-  if (ndf == NDF_BECKMANN) return facet::test::sigma_by_quadrature([&](double th) { return beckmann_D(p, th); }, u, std::min(p, 0.5), horizon);
-  if (ndf == NDF_GGX) return facet::test::sigma_by_quadrature([&](double th) { return ggx_D(p, th); }, u, std::min(p, 0.5), horizon);
+  if (ndf == NDF_BECKMANN)
+    return facet::test::sigma_by_quadrature([&](double th) { return beckmann_D(p, th); }, u, std::min(p, 0.5), horizon);
+  if (ndf == NDF_GGX)
+    return facet::test::sigma_by_quadrature([&](double th) { return ggx_D(p, th); }, u, std::min(p, 0.5), horizon);
   return facet::test::sigma_by_quadrature([&](double th) { return kk_D(p, th); }, u, std::sqrt(2.0 * (1.0 - p)));
 }
 
@@ -78,8 +80,9 @@ TEST(CrossSection, OddPartIsLinear) {
     }
   }
   for (double b : kB) {
-    double mean_ref = facet::test::sigma_by_quadrature([&](double th) { return kk_D(b, th); }, 1.0, std::sqrt(2.0 * (1.0 - b))) -
-                      facet::test::sigma_by_quadrature([&](double th) { return kk_D(b, th); }, -1.0, std::sqrt(2.0 * (1.0 - b)));
+    double mean_ref =
+        facet::test::sigma_by_quadrature([&](double th) { return kk_D(b, th); }, 1.0, std::sqrt(2.0 * (1.0 - b))) -
+        facet::test::sigma_by_quadrature([&](double th) { return kk_D(b, th); }, -1.0, std::sqrt(2.0 * (1.0 - b)));
     EXPECT_NEAR(f64::ndf_kk_mean_z(b), mean_ref, 1e-13) << b;
   }
 }
@@ -129,10 +132,13 @@ TEST(CrossSection, SmithLambdaConsistentWithSigma) {
       glm::dvec3 w(std::sqrt(1 - u * u), 0.0, u);
       for (int ndf : {NDF_BECKMANN, NDF_GGX}) {
         double sigma = f64::ndf_sigma(ndf, w, a);
-        double lambda = ndf == NDF_BECKMANN ? f64::ndf_beckmann_lambda(w, glm::dvec2(a)) : f64::ndf_ggx_lambda(w, glm::dvec2(a));
+        double lambda =
+            ndf == NDF_BECKMANN ? f64::ndf_beckmann_lambda(w, glm::dvec2(a)) : f64::ndf_ggx_lambda(w, glm::dvec2(a));
         double from_sigma = sigma / u - 1.0;
-        if (from_sigma > 1e-3) EXPECT_NEAR(lambda, from_sigma, 1e-12 * (1.0 + from_sigma)) << ndf << " " << a << " " << u;
-        else EXPECT_NEAR(lambda, from_sigma, 1e-15);
+        if (from_sigma > 1e-3)
+          EXPECT_NEAR(lambda, from_sigma, 1e-12 * (1.0 + from_sigma)) << ndf << " " << a << " " << u;
+        else
+          EXPECT_NEAR(lambda, from_sigma, 1e-15);
         EXPECT_GE(lambda, 0.0);
       }
     }
@@ -176,7 +182,8 @@ TEST(CrossSection, FloatTwinMatchesDoubleEverywhere) {
       for (int i = 0; i <= 400; ++i) {
         double u = -1.0 + 2.0 * i / 400.0;
         float got = f32::ndf_sigma_u(ndf, static_cast<float>(u), static_cast<float>(p));
-        double ref = f64::ndf_sigma_u(ndf, static_cast<double>(static_cast<float>(u)), static_cast<double>(static_cast<float>(p)));
+        double ref = f64::ndf_sigma_u(ndf, static_cast<double>(static_cast<float>(u)),
+                                      static_cast<double>(static_cast<float>(p)));
         ASSERT_TRUE(std::isfinite(got) && got >= 0.0f) << ndf << " " << p << " " << u;
         worst[ndf] = std::max(worst[ndf], std::abs(got - ref) / std::max(1.0, ref));
       }

@@ -32,11 +32,16 @@ TEST(GaussianMasking, LambdaMatchesCentredBeckmann) {
                              2 * c * std::cos(phi) * std::sin(phi);
         const long double ref = beckmann_lambda(theta, std::sqrt(2 * var_o));
         if (ref < 1e-300L) continue;
-        worst64 = std::max(worst64, static_cast<double>(std::abs(f64::gaussian_smith_lambda({0, 0}, {vx, vy, c}, theta, phi) / ref - 1)));
+        worst64 = std::max(
+            worst64,
+            static_cast<double>(std::abs(f64::gaussian_smith_lambda({0, 0}, {vx, vy, c}, theta, phi) / ref - 1)));
         if (ref > 1e-30L) {
           const long double ref_f = beckmann_lambda(float(theta), std::sqrt(2 * var_o));
-          worst32 = std::max(worst32, static_cast<double>(std::abs(
-                                          f32::gaussian_smith_lambda({0, 0}, {float(vx), float(vy), float(c)}, float(theta), float(phi)) / ref_f - 1)));
+          worst32 = std::max(
+              worst32, static_cast<double>(std::abs(f32::gaussian_smith_lambda({0, 0}, {float(vx), float(vy), float(c)},
+                                                                               float(theta), float(phi)) /
+                                                        ref_f -
+                                                    1)));
         }
       }
   std::printf("Lambda vs Beckmann: worst relative f64 %.2g f32 %.2g\n", worst64, worst32);
@@ -64,14 +69,16 @@ TEST(GaussianMasking, ConsistentWithVisibleSlopeNormalisation) {
 TEST(GaussianMasking, HeightCorrelatedShadowingMasking) {
   const glm::dvec2 mean(0.2, -0.1);
   const glm::dvec3 cov(0.3, 0.2, 0.05);
-  const double li = f64::gaussian_smith_lambda(mean, cov, 0.9, 0.3), lo = f64::gaussian_smith_lambda(mean, cov, 1.2, 2.0);
+  const double li = f64::gaussian_smith_lambda(mean, cov, 0.9, 0.3),
+               lo = f64::gaussian_smith_lambda(mean, cov, 1.2, 2.0);
   EXPECT_NEAR(f64::gaussian_smith_g2(mean, cov, 0.9, 0.3, 1.2, 2.0), 1 / (1 + li + lo), 1e-15);
   // Height correlation: between the uncorrelated product G1 G1 and min(G1, G1); equal to G1 when one
   // side sees everything (theta = 0, Lambda = 0).
   const double g1_i = f64::gaussian_smith_g1(mean, cov, 0.9, 0.3), g1_o = f64::gaussian_smith_g1(mean, cov, 1.2, 2.0);
   EXPECT_GE(f64::gaussian_smith_g2(mean, cov, 0.9, 0.3, 1.2, 2.0), g1_i * g1_o);
   EXPECT_LE(f64::gaussian_smith_g2(mean, cov, 0.9, 0.3, 1.2, 2.0), std::min(g1_i, g1_o));
-  EXPECT_NEAR(f64::gaussian_smith_g2(mean, cov, 0.0, 0.0, 1.2, 2.0), f64::gaussian_smith_g1(mean, cov, 1.2, 2.0), 1e-15);
+  EXPECT_NEAR(f64::gaussian_smith_g2(mean, cov, 0.0, 0.0, 1.2, 2.0), f64::gaussian_smith_g1(mean, cov, 1.2, 2.0),
+              1e-15);
   // The mean plane faces away from one direction: G2 = 0; Lambda saturates but stays finite.
   EXPECT_EQ(f64::gaussian_smith_g2({5, 0}, cov, 0.9, 0.0, 0.3, 0.0), 0.0);
   EXPECT_TRUE(std::isfinite(f32::gaussian_smith_lambda({5, 0}, {0.3f, 0.2f, 0.05f}, 0.9f, 0.0f)));
@@ -91,7 +98,8 @@ TEST(GaussianMasking, VisibleHeightSamplingChiSquare) {
   const double h_mean = 0.3, h_sigma = 2.0;
   for (double lambda : {0.0, 0.7, 25.0, 1e6}) {
     auto cdf = [&](long double h) {
-      return std::pow(0.5L * std::erfc(-(h - h_mean) / (h_sigma * std::sqrt(2.0L))), 1 + static_cast<long double>(lambda));
+      return std::pow(0.5L * std::erfc(-(h - h_mean) / (h_sigma * std::sqrt(2.0L))),
+                      1 + static_cast<long double>(lambda));
     };
     const int n = 200000, cells = 100;
     std::vector<double> edges;  // interior edges at CDF = i/cells, found by bisection on the reference CDF
@@ -132,7 +140,8 @@ TEST(GaussianMasking, VisibleHeightSampleInvertsTheCdf) {
   // pdf integrates the cdf: a central difference agrees.
   const double h = 0.2, dh = 1e-5;
   EXPECT_NEAR(f64::visible_height_pdf(h, 0, 1, 2.5),
-              (f64::visible_height_cdf(h + dh, 0, 1, 2.5) - f64::visible_height_cdf(h - dh, 0, 1, 2.5)) / (2 * dh), 1e-9);
+              (f64::visible_height_cdf(h + dh, 0, 1, 2.5) - f64::visible_height_cdf(h - dh, 0, 1, 2.5)) / (2 * dh),
+              1e-9);
 }
 
 }  // namespace

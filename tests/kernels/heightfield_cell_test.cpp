@@ -120,21 +120,21 @@ TEST(HeightFieldCell, FloatAgreesWithDouble) {
 TEST(HeightFieldCell, DegenerateDirections) {
   const glm::dvec4 z(0.1, 0.2, 0.3, 0.4);
   // Straight down at (0.5, 0.5): hits z = 0.25 from o.z = 1 at t = 0.75.
-  EXPECT_NEAR(k64::heightfield_cell_hit({0.5, 0.5, 1.0}, {0.0, 0.0, -1.0}, {INFINITY, INFINITY, -1.0}, 0.0, 0.0, z, 0.0,
-                                        4.0),
-              0.75, 1e-15);
+  EXPECT_NEAR(
+      k64::heightfield_cell_hit({0.5, 0.5, 1.0}, {0.0, 0.0, -1.0}, {INFINITY, INFINITY, -1.0}, 0.0, 0.0, z, 0.0, 4.0),
+      0.75, 1e-15);
   // Outside the cell's x range, vertical: no hit.
-  EXPECT_LT(k64::heightfield_cell_hit({1.5, 0.5, 1.0}, {0.0, 0.0, -1.0}, {INFINITY, INFINITY, -1.0}, 0.0, 0.0, z, 0.0,
-                                      4.0),
-            0.0);
+  EXPECT_LT(
+      k64::heightfield_cell_hit({1.5, 0.5, 1.0}, {0.0, 0.0, -1.0}, {INFINITY, INFINITY, -1.0}, 0.0, 0.0, z, 0.0, 4.0),
+      0.0);
   // Along x at constant y = 0 and height 0.15: crosses z = 0.1 + 0.1 u at u = 0.5.
-  EXPECT_NEAR(k64::heightfield_cell_hit({-1.0, 0.0, 0.15}, {1.0, 0.0, 0.0}, {1.0, INFINITY, INFINITY}, 0.0, 0.0, z, 0.0,
-                                        4.0),
-              1.5, 1e-15);
+  EXPECT_NEAR(
+      k64::heightfield_cell_hit({-1.0, 0.0, 0.15}, {1.0, 0.0, 0.0}, {1.0, INFINITY, INFINITY}, 0.0, 0.0, z, 0.0, 4.0),
+      1.5, 1e-15);
   // Starting on the surface and leaving it upwards: no hit at t = 0.
-  EXPECT_LT(k64::heightfield_cell_hit({0.5, 0.5, 0.25}, {0.0, 0.0, 1.0}, {INFINITY, INFINITY, 1.0}, 0.0, 0.0, z, 0.0,
-                                      4.0),
-            0.0);
+  EXPECT_LT(
+      k64::heightfield_cell_hit({0.5, 0.5, 0.25}, {0.0, 0.0, 1.0}, {INFINITY, INFINITY, 1.0}, 0.0, 0.0, z, 0.0, 4.0),
+      0.0);
 }
 
 }  // namespace

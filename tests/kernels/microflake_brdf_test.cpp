@@ -31,9 +31,9 @@ struct Material {
 };
 
 const std::vector<Material> kMaterials = {
-    {NDF_BECKMANN, 0.05, 0.05}, {NDF_BECKMANN, 0.5, 0.5}, {NDF_GGX, 0.05, 0.05}, {NDF_GGX, 0.5, 0.5},
-    {NDF_KK, 0.3, 1.0},         {NDF_KK, 0.999, 0.05},    {NDF_SG, 0.05, 0.05},  {NDF_SG, 0.5, 0.5},
-    {NDF_SG, 3.0, 1.0},
+    {NDF_BECKMANN, 0.05, 0.05}, {NDF_BECKMANN, 0.5, 0.5}, {NDF_GGX, 0.05, 0.05},
+    {NDF_GGX, 0.5, 0.5},        {NDF_KK, 0.3, 1.0},       {NDF_KK, 0.999, 0.05},
+    {NDF_SG, 0.05, 0.05},       {NDF_SG, 0.5, 0.5},       {NDF_SG, 3.0, 1.0},
 };
 
 // Directional albedo A(wi) = int f(wi, wo) mu_o dwo over the hemisphere of wo in (theta_o, phi_o),
@@ -98,7 +98,8 @@ TEST(MicroflakeBrdf, IsotropicLimitIsLommelSeeliger) {
       glm::dvec3 wi = direction(mu_i, 0.4);
       for (double mu_o : {0.01, 0.5, 1.0}) {
         glm::dvec3 wo = direction(mu_o, 2.0);
-        EXPECT_NEAR(f64::microflake_brdf(mat.ndf, mat.param, wi, wo), 1.0 / (4 * kPi * (mu_i + mu_o)), 2e-7 / (mu_i + mu_o));
+        EXPECT_NEAR(f64::microflake_brdf(mat.ndf, mat.param, wi, wo), 1.0 / (4 * kPi * (mu_i + mu_o)),
+                    2e-7 / (mu_i + mu_o));
       }
       double closed = 0.5 * (1.0 - mu_i * std::log((1.0 + mu_i) / mu_i));
       EXPECT_NEAR(albedo_by_quadrature(mat, wi), closed, 1e-6) << mat.ndf << " mu_i " << mu_i;

@@ -135,20 +135,22 @@ double node_slope_mean(const std::function<double(glm::dvec2)>& f, const SlopeCa
 
 // The slope integrals of the shader (the cosine to the light and a slope colour ramp, each against D_s)
 // by the 4 x 4 Gauss-Hermite grid (and the cosine alone by the 3 x 3 one) over the Gaussian
-// approximation of D_s, against brute force over the exact D_s. The approximation (not the grid) dominates at grazing views.
+// approximation of D_s, against brute force over the exact D_s. The approximation (not the grid) dominates at grazing
+// views.
 TEST(MicrosurfaceFilter, VisibleSlopeIntegralsMatchQuadrature) {
   const glm::dvec3 l = glm::normalize(glm::dvec3(0.4, 0.3, 0.8));
   const auto cosine = [&](glm::dvec2 s) { return std::max(glm::dot(k64::microsurface_normal(s), l), 0.0); };
   const auto ramp = [](glm::dvec2 s) { return std::min(glm::length(s) / 1.2, 1.0); };  // viridis-like domain
   const SlopeCase cases[] = {
-      {{0.0, 0.0}, {0.22, 0.22, 0.0}, 0.0, 0.0},     {{0.0, 0.0}, {0.22, 0.22, 0.0}, 1.0, 0.3},
-      {{0.0, 0.0}, {0.22, 0.22, 0.0}, 1.35, -1.2},   {{0.1, -0.2}, {0.05, 0.3, 0.06}, 0.8, 2.0},
-      {{0.0, 0.0}, {0.01, 0.01, 0.0}, 1.5, 0.0},     {{0.3, 0.0}, {0.02, 0.004, 0.0}, 1.2, 3.1},
+      {{0.0, 0.0}, {0.22, 0.22, 0.0}, 0.0, 0.0},   {{0.0, 0.0}, {0.22, 0.22, 0.0}, 1.0, 0.3},
+      {{0.0, 0.0}, {0.22, 0.22, 0.0}, 1.35, -1.2}, {{0.1, -0.2}, {0.05, 0.3, 0.06}, 0.8, 2.0},
+      {{0.0, 0.0}, {0.01, 0.01, 0.0}, 1.5, 0.0},   {{0.3, 0.0}, {0.02, 0.004, 0.0}, 1.2, 3.1},
   };
   double worst_cos = 0.0, worst_ramp = 0.0, worst_cos3 = 0.0;
   for (const SlopeCase& c : cases) {
     worst_cos = std::max(worst_cos, std::abs(node_slope_mean(cosine, c) - brute_slope_mean(cosine, c)));
-    worst_cos3 = std::max(worst_cos3, std::abs(node_slope_mean(cosine, c, MS_SLOPE_NODES_COSINE) - brute_slope_mean(cosine, c)));
+    worst_cos3 =
+        std::max(worst_cos3, std::abs(node_slope_mean(cosine, c, MS_SLOPE_NODES_COSINE) - brute_slope_mean(cosine, c)));
     worst_ramp = std::max(worst_ramp, std::abs(node_slope_mean(ramp, c) - brute_slope_mean(ramp, c)));
   }
   std::printf("visible-slope integrals: worst |error| cosine %.2e (3 x 3 rule %.2e), slope ramp %.2e\n", worst_cos,
@@ -184,8 +186,8 @@ TEST(MicrosurfaceFilter, SpecularLobeIsTheConvolvedBeckmann) {
       const glm::dvec2 d(-8.0 * ax + 16.0 * ax * (i + 0.5) / n, -8.0 * ay + 16.0 * ay * (j + 0.5) / n);
       const double q = (rough.s_cov.y * d.x * d.x - 2 * rough.s_cov.z * d.x * d.y + rough.s_cov.x * d.y * d.y) / det;
       const glm::dvec2 r = sh - rough.s_mean - d;
-      const double lobe = std::exp(-(r.x * r.x) / (alpha.x * alpha.x) - (r.y * r.y) / (alpha.y * alpha.y)) /
-                          (M_PI * alpha.x * alpha.y);
+      const double lobe =
+          std::exp(-(r.x * r.x) / (alpha.x * alpha.x) - (r.y * r.y) / (alpha.y * alpha.y)) / (M_PI * alpha.x * alpha.y);
       conv += std::exp(-0.5 * q) / (2 * M_PI * std::sqrt(det)) * lobe * (16 * ax / n) * (16 * ay / n);
     }
   const glm::dvec3 cov = rough.s_cov + glm::dvec3(0.5 * alpha.x * alpha.x, 0.5 * alpha.y * alpha.y, 0.0);
@@ -212,11 +214,13 @@ TEST(MicrosurfaceFilter, ZeroVarianceIsThePoint) {
     if (pass == 0) {
       const auto s = k64::microsurface_statistics(m0, m1);
       const auto vis = k64::microsurface_visibility(s, v, l);
-      check(s, vis, k64::microsurface_slope_node(vis.ds, MS_SLOPE_NODES, 0, 0), k64::microsurface_height_node(0, s.h_mean, s.h_sigma, vis.lambda_v));
+      check(s, vis, k64::microsurface_slope_node(vis.ds, MS_SLOPE_NODES, 0, 0),
+            k64::microsurface_height_node(0, s.h_mean, s.h_sigma, vis.lambda_v));
     } else {
       const auto s = k32::microsurface_statistics(glm::vec4(m0), glm::vec4(m1));
       const auto vis = k32::microsurface_visibility(s, glm::vec3(v), glm::vec3(l));
-      check(s, vis, k32::microsurface_slope_node(vis.ds, MS_SLOPE_NODES, 0, 0), k32::microsurface_height_node(0, s.h_mean, s.h_sigma, vis.lambda_v));
+      check(s, vis, k32::microsurface_slope_node(vis.ds, MS_SLOPE_NODES, 0, 0),
+            k32::microsurface_height_node(0, s.h_mean, s.h_sigma, vis.lambda_v));
     }
   }
 }
@@ -236,7 +240,8 @@ TEST(MicrosurfaceFilter, FloatTwinFollowsDouble) {
       const double theta = a * 0.28, phi = b * 1.3;
       const glm::dvec3 v(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
       const glm::dvec3 l = glm::normalize(glm::dvec3(-0.6, 0.5, 0.4 + 0.1 * b));
-      const double sx = 0.1 * (b - 2), sy = 0.05 * a, vx = 0.02 + 0.05 * a, vy = 0.3 - 0.04 * b, c = 0.3 * std::sqrt(vx * vy);
+      const double sx = 0.1 * (b - 2), sy = 0.05 * a, vx = 0.02 + 0.05 * a, vy = 0.3 - 0.04 * b,
+                   c = 0.3 * std::sqrt(vx * vy);
       const glm::dvec4 m0(0.001 * a, 1e-4 + 1e-6 * a * a, sx, sy), m1(vx + sx * sx, vy + sy * sy, c + sx * sy, 0.0);
       const auto s64 = k64::microsurface_statistics(m0, m1);
       const auto s32 = k32::microsurface_statistics(glm::vec4(m0), glm::vec4(m1));
@@ -252,18 +257,23 @@ TEST(MicrosurfaceFilter, FloatTwinFollowsDouble) {
                                std::abs(vis32.lit - vis64.lit)});
       for (int i = 0; i < MS_SLOPE_NODES; ++i)
         for (int j = 0; j < MS_SLOPE_NODES; ++j)
-          worst_node = std::max(worst_node, glm::length(glm::dvec2(k32::microsurface_slope_node(vis32.ds, MS_SLOPE_NODES, i, j).s) -
-                                                        k64::microsurface_slope_node(vis64.ds, MS_SLOPE_NODES, i, j).s));
+          worst_node = std::max(worst_node,
+                                glm::length(glm::dvec2(k32::microsurface_slope_node(vis32.ds, MS_SLOPE_NODES, i, j).s) -
+                                            k64::microsurface_slope_node(vis64.ds, MS_SLOPE_NODES, i, j).s));
       for (int k = 0; k < MS_HEIGHT_NODES; ++k)
-        worst_height = std::max(worst_height, std::abs(k32::microsurface_height_node(k, s32.h_mean, s32.h_sigma, vis32.lambda_v) -
-                                                       k64::microsurface_height_node(k, s64.h_mean, s64.h_sigma, vis64.lambda_v)) / s64.h_sigma);
+        worst_height =
+            std::max(worst_height, std::abs(k32::microsurface_height_node(k, s32.h_mean, s32.h_sigma, vis32.lambda_v) -
+                                            k64::microsurface_height_node(k, s64.h_mean, s64.h_sigma, vis64.lambda_v)) /
+                                       s64.h_sigma);
       const glm::dvec2 alpha(0.05, 0.2);
       const double spec64 = k64::microsurface_specular(s64, alpha, l, v);
       const double spec32 = k32::microsurface_specular(s32, glm::vec2(alpha), glm::vec3(l), glm::vec3(v));
       worst_spec = std::max(worst_spec, std::abs(spec32 - spec64) / std::max(spec64, 1e-3));
     }
-  std::printf("float vs double: Lambda/lit %.1e, slope nodes %.1e, height nodes %.1e sigma_h, specular %.1e"
-              " (%d of 30 saturated)\n", worst_lambda, worst_node, worst_height, worst_spec, saturated);
+  std::printf(
+      "float vs double: Lambda/lit %.1e, slope nodes %.1e, height nodes %.1e sigma_h, specular %.1e"
+      " (%d of 30 saturated)\n",
+      worst_lambda, worst_node, worst_height, worst_spec, saturated);
   EXPECT_LE(saturated, 6);
   // float eps 6e-8 times the condition of each step (t up to ~1e2 amplifies, Newton quantile to 1e-5).
   EXPECT_LT(worst_lambda, 1e-4);

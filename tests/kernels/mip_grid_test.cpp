@@ -35,7 +35,7 @@ TEST(MipGrid, WeightsReproduceThePositionOnEveryLevel) {
         ASSERT_LT(t.i0, count);
         ASSERT_EQ(t.i1, (t.i0 + 1) % count);
         double left = covered_centre(t.i0, span, size0), right = covered_centre(t.i1, span, size0);
-        if (right <= left) right += size0;          // the next period
+        if (right <= left) right += size0;                    // the next period
         if (x0 < left - 1e-9) left -= size0, right -= size0;  // x before the first centre
         const double blended = (1 - t.w1) * left + t.w1 * right;
         ASSERT_NEAR(blended, x0, 1e-12 * size0) << size0 << " span " << span << " u " << u;

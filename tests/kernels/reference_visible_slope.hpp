@@ -1,5 +1,6 @@
 // Brute-force quadrature reference for the visible slope distribution D_s (eqs. 12-23 of
-// Heitz et al. 2014, Filtering Non-Linear Transfer Functions on Surfaces, supplemental), independent of the kernel's closed forms.
+// Heitz et al. 2014, Filtering Non-Linear Transfer Functions on Surfaces, supplemental), independent of the kernel's
+// closed forms.
 //
 // The defining 2D integrals  N = int p_s(s) max(0, W(s)) ds  and the first and central second moments
 // of p_s max(0, W)/N are integrated numerically over the whitened coordinates (y, v) of p_s in the view
@@ -37,7 +38,7 @@ double integrate_1d(Quadrature rule, int level, F f, double a, double b) {
   if (rule == Quadrature::GaussKronrod)
     return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, a, b, 8, 1e-13);
   static boost::math::quadrature::tanh_sinh<double> tanh_sinh[2] = {boost::math::quadrature::tanh_sinh<double>(12),
-                                                                     boost::math::quadrature::tanh_sinh<double>(12)};
+                                                                    boost::math::quadrature::tanh_sinh<double>(12)};
   return tanh_sinh[level].integrate(f, a, b, 1e-13);
 }
 
@@ -59,12 +60,16 @@ inline SlopeMoments reference_visible_slope(const SlopeCase& k, Quadrature rule)
   const double t_scale = std::max(t, 1.0);
   const double q_lo = beyond ? 0.0 : -40.0;
   const double q_hi = beyond ? 800.0 / (1.0 - t) : std::min(t, 40.0);
-  auto weight = [&](double q) { return beyond ? q * std::exp(q * (t - 0.5 * q)) : (t - q) / t_scale * std::exp(-0.5 * q * q); };
+  auto weight = [&](double q) {
+    return beyond ? q * std::exp(q * (t - 0.5 * q)) : (t - q) / t_scale * std::exp(-0.5 * q * q);
+  };
   const double origin_o = beyond ? cos_t / sin_t : mean_o;
   const double origin_perp = beyond ? mean_perp + beta_sigma * t : mean_perp;
   // In units of sigma_o (keeps the integrands O(1) for tiny variances).
   auto d_o = [&](double q) { return beyond ? -q : q; };
-  auto d_perp = [&](double q, double v) { return ((beyond ? -beta_sigma * q : beta_sigma * q) + sigma_cond * v) / sigma_o; };
+  auto d_perp = [&](double q, double v) {
+    return ((beyond ? -beta_sigma * q : beta_sigma * q) + sigma_cond * v) / sigma_o;
+  };
   // v enters through phi(v) only, so the inner integrand is symmetrised onto v >= 0 (keeps odd parts,
   // whose integral is 0, from defeating the relative tolerance).
   auto integrate = [&](auto g) {
@@ -87,8 +92,16 @@ inline SlopeMoments reference_visible_slope(const SlopeCase& k, Quadrature rule)
   const double I0 = integrate([](double, double) { return 1.0; });
   const double m_o = integrate([&](double q, double) { return d_o(q); }) / I0;
   const double m_p = integrate([&](double q, double v) { return d_perp(q, v); }) / I0;
-  const double v_oo = integrate([&](double q, double) { double e = d_o(q) - m_o; return e * e; }) / I0 * var_o;
-  const double v_pp = integrate([&](double q, double v) { double e = d_perp(q, v) - m_p; return e * e; }) / I0 * var_o;
+  const double v_oo = integrate([&](double q, double) {
+                        double e = d_o(q) - m_o;
+                        return e * e;
+                      }) /
+                      I0 * var_o;
+  const double v_pp = integrate([&](double q, double v) {
+                        double e = d_perp(q, v) - m_p;
+                        return e * e;
+                      }) /
+                      I0 * var_o;
   // E[(s_o - m_o) s_perp]: exactly 0 integrand when uncorrelated (no zero-valued relative tolerance).
   const double v_op = integrate([&](double q, double v) { return (d_o(q) - m_o) * d_perp(q, v); }) / I0 * var_o;
   const double ds_mean_o = origin_o + sigma_o * m_o, ds_mean_p = origin_perp + sigma_o * m_p;

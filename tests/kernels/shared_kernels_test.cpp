@@ -11,8 +11,14 @@ TEST(SharedKernels, ConstantsRoundedPerPrecision) {
   using namespace facet::kernels;
   static_assert(std::is_same_v<f32::real, float>);
   static_assert(std::is_same_v<f64::real, double>);
-  EXPECT_EQ(static_cast<float>(3.14159265358979323846), [] { using namespace f32; return FACET_PI; }());
-  EXPECT_EQ(3.14159265358979323846, [] { using namespace f64; return FACET_PI; }());
+  EXPECT_EQ(static_cast<float>(3.14159265358979323846), [] {
+    using namespace f32;
+    return FACET_PI;
+  }());
+  EXPECT_EQ(3.14159265358979323846, [] {
+    using namespace f64;
+    return FACET_PI;
+  }());
   EXPECT_EQ(second_tu_pi(), 3.14159265358979323846);
 }
 

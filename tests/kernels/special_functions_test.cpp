@@ -56,7 +56,8 @@ TEST(SpecialFunctions, ErfcAndErfRelativeAccuracyIntoTheTails) {
   }
   for (double x = 1e-30; x < 1e-3; x *= 1.1) {  // erf near 0 keeps relative accuracy
     worst64 = std::max(worst64, rel(f64::sf_erf(x), std::erf(static_cast<long double>(x))));
-    worst32 = std::max(worst32, rel(f32::sf_erf(static_cast<float>(x)), std::erf(static_cast<long double>(static_cast<float>(x)))));
+    worst32 = std::max(
+        worst32, rel(f32::sf_erf(static_cast<float>(x)), std::erf(static_cast<long double>(static_cast<float>(x)))));
   }
   RecordProperty("worst_f64", std::to_string(worst64));
   RecordProperty("worst_f32", std::to_string(worst32));
@@ -91,17 +92,19 @@ TEST(SpecialFunctions, NormalRatiosAndLogCdfStayAccurateWhereTheyUnderflow) {
     const long double Phi = 0.5L * std::erfc(-tl / std::sqrt(2.0L));
     const long double log_Phi = t < 0 ? std::log(0.5L * erfcx_reference(-tl / std::sqrt(2.0L))) - 0.5L * tl * tl
                                       : std::log1p(-0.5L * std::erfc(tl / std::sqrt(2.0L)));
-    const long double ratio = t < 0 ? std::sqrt(2 / std::numbers::pi_v<long double>) / erfcx_reference(-tl / std::sqrt(2.0L))
-                                    : std::exp(-0.5L * tl * tl) / std::sqrt(2 * std::numbers::pi_v<long double>) / Phi;
+    const long double ratio =
+        t < 0 ? std::sqrt(2 / std::numbers::pi_v<long double>) / erfcx_reference(-tl / std::sqrt(2.0L))
+              : std::exp(-0.5L * tl * tl) / std::sqrt(2 * std::numbers::pi_v<long double>) / Phi;
     worst64 = std::max(worst64, rel(f64::sf_phi_over_Phi(t), ratio));
     worst64 = std::max(worst64, std::abs(f64::sf_log_normal_cdf(t) - static_cast<double>(log_Phi)) /
                                     std::max(1e-300, std::abs(static_cast<double>(log_Phi))));
     if (t > -1e3 && t < 13) {
       const float tf = static_cast<float>(t);
       const long double tfl = tf;
-      const long double ratio_f = tf < 0 ? std::sqrt(2 / std::numbers::pi_v<long double>) / erfcx_reference(-tfl / std::sqrt(2.0L))
-                                         : std::exp(-0.5L * tfl * tfl) / std::sqrt(2 * std::numbers::pi_v<long double>) /
-                                               (0.5L * std::erfc(-tfl / std::sqrt(2.0L)));
+      const long double ratio_f =
+          tf < 0 ? std::sqrt(2 / std::numbers::pi_v<long double>) / erfcx_reference(-tfl / std::sqrt(2.0L))
+                 : std::exp(-0.5L * tfl * tfl) / std::sqrt(2 * std::numbers::pi_v<long double>) /
+                       (0.5L * std::erfc(-tfl / std::sqrt(2.0L)));
       worst32 = std::max(worst32, rel(f32::sf_phi_over_Phi(tf), ratio_f));
     }
   }
@@ -117,7 +120,8 @@ TEST(SpecialFunctions, UpperQuantileInvertsTheTail) {
     // Residual of log Q at the returned x, converted to an error in x through d log Q/dx = -1/R(x).
     const double x = f64::sf_normal_quantile_upper_log(log_q);
     const long double e = erfcx_reference(x / std::sqrt(2.0L));
-    const long double residual = (std::log(0.5L * e) - 0.5L * x * x - log_q) * std::sqrt(std::numbers::pi_v<long double> / 2) * e;
+    const long double residual =
+        (std::log(0.5L * e) - 0.5L * x * x - log_q) * std::sqrt(std::numbers::pi_v<long double> / 2) * e;
     worst64 = std::max(worst64, static_cast<double>(std::abs(residual)) / std::max(1.0, x));
     if (log_q > -80) {
       const float lq = static_cast<float>(log_q);

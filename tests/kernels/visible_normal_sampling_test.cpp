@@ -24,7 +24,7 @@ constexpr int kSamples = 200000;
 struct Case {
   int ndf;
   double param;
-  double wi_z;  // wi = (sqrt(1 - z^2) cos 1, sqrt(1 - z^2) sin 1, z): azimuth 1 rad, not a cell edge
+  double wi_z;             // wi = (sqrt(1 - z^2) cos 1, sqrt(1 - z^2) sin 1, z): azimuth 1 rad, not a cell edge
   double theta_max = 0.0;  // cells cover theta < theta_max (0: the support of D); D beyond it < 1e-40
 };
 
@@ -69,12 +69,26 @@ Histogram expected_histogram(const Case& c) {
 }
 
 const std::vector<Case> kCases = {
-    {NDF_BECKMANN, 0.3, 0.8}, {NDF_BECKMANN, 0.6, 0.2}, {NDF_BECKMANN, 0.6, -0.3}, {NDF_BECKMANN, 1.5, 1.0},
-    {NDF_GGX, 0.3, 0.8},      {NDF_GGX, 0.6, 0.2},      {NDF_GGX, 0.6, -0.3},      {NDF_GGX, 1.5, 1.0},
-    {NDF_KK, 0.5, 0.7},       {NDF_KK, 0.95, -0.6},     {NDF_KK, 0.999, 0.1},
-    {NDF_SG, 0.5, 0.7},       {NDF_SG, 1.0, -0.6},      {NDF_SG, 3.0, 0.1},        {NDF_SG, 0.3, -0.2},
+    {NDF_BECKMANN, 0.3, 0.8},
+    {NDF_BECKMANN, 0.6, 0.2},
+    {NDF_BECKMANN, 0.6, -0.3},
+    {NDF_BECKMANN, 1.5, 1.0},
+    {NDF_GGX, 0.3, 0.8},
+    {NDF_GGX, 0.6, 0.2},
+    {NDF_GGX, 0.6, -0.3},
+    {NDF_GGX, 1.5, 1.0},
+    {NDF_KK, 0.5, 0.7},
+    {NDF_KK, 0.95, -0.6},
+    {NDF_KK, 0.999, 0.1},
+    {NDF_SG, 0.5, 0.7},
+    {NDF_SG, 1.0, -0.6},
+    {NDF_SG, 3.0, 0.1},
+    {NDF_SG, 0.3, -0.2},
     // concentrated spherical Gaussian (kappa > 200): cells on theta < 10 alpha (vMF tail e^-100 beyond)
-    {NDF_SG, 0.05, 0.6, 0.5}, {NDF_SG, 0.05, 0.05, 0.5}, {NDF_SG, 0.05, -0.03, 0.5}, {NDF_SG, 0.005, 0.3, 0.05},
+    {NDF_SG, 0.05, 0.6, 0.5},
+    {NDF_SG, 0.05, 0.05, 0.5},
+    {NDF_SG, 0.05, -0.03, 0.5},
+    {NDF_SG, 0.005, 0.3, 0.05},
 };
 
 // Each case must pass at level 0.01 / number of cases (Sidak-like correction for the whole family).
@@ -107,8 +121,8 @@ TEST(VisibleNormalSampling, FloatExtremes) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   for (int ndf : {NDF_BECKMANN, NDF_GGX, NDF_KK, NDF_SG}) {
-    std::vector<float> params = ndf == NDF_KK ? std::vector<float>{1e-6f, 0.5f, 1.0f - 1e-6f}
-                                              : std::vector<float>{1e-3f, 0.3f, 1e3f};
+    std::vector<float> params =
+        ndf == NDF_KK ? std::vector<float>{1e-6f, 0.5f, 1.0f - 1e-6f} : std::vector<float>{1e-3f, 0.3f, 1e3f};
     for (float p : params) {
       for (float z : {-1.0f, -0.5f, -1e-3f, 0.0f, 1e-3f, 0.5f, 1.0f}) {
         glm::vec3 wi(std::sqrt(std::max(0.0f, 1.0f - z * z)), 0.0f, z);

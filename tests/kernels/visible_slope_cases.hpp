@@ -5,8 +5,8 @@
 // tr Sigma_s, Sigma_s the true covariance of D_s. Targets: 1e-9 (double), 2e-4 (float), plus the
 // *input floor*: inputs are themselves rounded to eps, and a relative change eps of theta or of the
 // mean slope moves t by dt = eps ((cos theta + |s_o| sin theta)(1 + theta)/(sin theta sigma_o) + 2|t|),
-// hence log N by (1 + |t|) dt, the mean by eps (|cot theta| + |s| + 2|mean of D_s|) and the covariance by 2 dt/(1 + |t|)
-// (relative), which no implementation in that precision can beat (e.g. N = exp(-5e7) at t = -1e4).
+// hence log N by (1 + |t|) dt, the mean by eps (|cot theta| + |s| + 2|mean of D_s|) and the covariance by 2 dt/(1 +
+// |t|) (relative), which no implementation in that precision can beat (e.g. N = exp(-5e7) at t = -1e4).
 #pragma once
 
 #include <algorithm>
@@ -23,7 +23,8 @@ inline constexpr double kPi = std::numbers::pi;
 
 inline std::vector<SlopeCase> quadrature_cases() {
   std::vector<SlopeCase> cases = {
-      // Heitz et al. 2013, Filtering Color Mapped Textures and Surfaces (supplemental), Table 3, rows 2-5 (row 1 is theta = 0, tested exactly below).
+      // Heitz et al. 2013, Filtering Color Mapped Textures and Surfaces (supplemental), Table 3, rows 2-5 (row 1 is
+      // theta = 0, tested exactly below).
       {1, 0, 1, 1, 0, 1.56, 0},
       {1, 1, 1, 1, 0.5, 1.56, kPi / 2},
       {1, 1, 1, 1, 0.75, 1.56, -kPi / 2},
@@ -49,8 +50,8 @@ inline std::vector<SlopeCase> quadrature_cases() {
   for (int i = 0; i < 12; ++i) {
     const double var_x = std::pow(10.0, -2 + 3 * uni(rng)), var_y = std::pow(10.0, -2 + 3 * uni(rng));
     const double rho = 1.8 * uni(rng) - 0.9;
-    cases.push_back({2 * uni(rng) - 1, 2 * uni(rng) - 1, var_x, var_y, rho * std::sqrt(var_x * var_y),
-                     1.55 * uni(rng), 2 * kPi * uni(rng)});
+    cases.push_back({2 * uni(rng) - 1, 2 * uni(rng) - 1, var_x, var_y, rho * std::sqrt(var_x * var_y), 1.55 * uni(rng),
+                     2 * kPi * uni(rng)});
   }
   return cases;
 }
@@ -76,7 +77,8 @@ inline Errors input_floor(const SlopeCase& k, const SlopeMoments& r, double eps)
   const double sigma_o = std::sqrt(k.var_x * c * c + k.var_y * s * s + 2 * k.c_xy * c * s);
   const double a = std::sin(k.theta) * sigma_o;
   const double t = (std::cos(k.theta) - mean_o * std::sin(k.theta)) / a;
-  const double dt = eps * ((std::cos(k.theta) + std::abs(mean_o) * std::sin(k.theta)) * (1 + k.theta) / a + 2 * std::abs(t));
+  const double dt =
+      eps * ((std::cos(k.theta) + std::abs(mean_o) * std::sin(k.theta)) * (1 + k.theta) / a + 2 * std::abs(t));
   // The mean is a sum of terms of size |cot theta|, |s| and, through the regression of s_perp on
   // s_o, |mean of D_s| itself (which can exceed the others by orders of magnitude for strongly
   // correlated, thin laws beyond the horizon); a float result cannot be nearer than eps times that.

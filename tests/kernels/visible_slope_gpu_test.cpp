@@ -60,14 +60,14 @@ TEST(VisibleSlopeGpu, FloatShaderMatchesDoubleKernelOverTheDomain) {
       glm::dvec2 mean;
       glm::dvec3 cov;
     } gpu_result{results[i].a.y, {results[i].a.z, results[i].a.w}, {results[i].b.x, results[i].b.y, results[i].b.z}};
-    SCOPED_TRACE(::testing::Message() << "case " << i << ": " << k.mean_x << " " << k.mean_y << " " << k.var_x
-                                      << " " << k.var_y << " " << k.c_xy << " theta " << k.theta << " phi " << k.phi);
+    SCOPED_TRACE(::testing::Message() << "case " << i << ": " << k.mean_x << " " << k.mean_y << " " << k.var_x << " "
+                                      << k.var_y << " " << k.c_xy << " theta " << k.theta << " phi " << k.phi);
     ASSERT_TRUE(std::isfinite(gpu_result.log_N) && std::isfinite(results[i].a.x));
     const test::Errors e = test::errors(ref, gpu_result);
     const test::Errors floor = test::input_floor(k, ref, 1.2e-7);
-    const auto f = kernels::f32::visible_slope({float(k.mean_x), float(k.mean_y)},
-                                               {float(k.var_x), float(k.var_y), float(k.c_xy)}, float(k.theta),
-                                               float(k.phi));
+    const auto f =
+        kernels::f32::visible_slope({float(k.mean_x), float(k.mean_y)}, {float(k.var_x), float(k.var_y), float(k.c_xy)},
+                                    float(k.theta), float(k.phi));
     const test::Errors twin = test::errors(ref, f);
     auto within = [&](double error, double floor_part, double twin_part) {
       if (error <= 2e-4 + 4 * floor_part) return true;
@@ -82,9 +82,10 @@ TEST(VisibleSlopeGpu, FloatShaderMatchesDoubleKernelOverTheDomain) {
     if (floor.mean < 2e-5) worst.mean = std::max(worst.mean, e.mean);
     if (floor.cov < 2e-5) worst.cov = std::max(worst.cov, e.cov);
   }
-  std::printf("GPU float vs double over %zu cases (floor < 2e-5): logN %.2g mean %.2g cov %.2g; "
-              "%d measures beyond the floor estimate, all within 3x the float twin\n",
-              cases.size(), worst.log_N, worst.mean, worst.cov, beyond_floor);
+  std::printf(
+      "GPU float vs double over %zu cases (floor < 2e-5): logN %.2g mean %.2g cov %.2g; "
+      "%d measures beyond the floor estimate, all within 3x the float twin\n",
+      cases.size(), worst.log_N, worst.mean, worst.cov, beyond_floor);
   EXPECT_LT(beyond_floor, static_cast<int>(cases.size()) / 100);
   EXPECT_EQ(context->validation_message_count(), 0u);
 }

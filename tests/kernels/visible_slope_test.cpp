@@ -17,14 +17,14 @@
 namespace {
 
 using namespace facet;
-using test::SlopeCase;
-using test::SlopeMoments;
 using test::Errors;
-using test::kPi;
 using test::errors;
 using test::input_floor;
+using test::kPi;
 using test::quadrature_cases;
 using test::rounded_to_float;
+using test::SlopeCase;
+using test::SlopeMoments;
 
 TEST(VisibleSlope, QuadratureRulesAgreeAndKernelsMatchThem) {
   double worst_rules = 0;
@@ -55,8 +55,9 @@ TEST(VisibleSlope, QuadratureRulesAgreeAndKernelsMatchThem) {
 
     const SlopeCase kf = rounded_to_float(k);
     const SlopeMoments gkf = test::reference_visible_slope(kf, test::Quadrature::GaussKronrod);
-    const auto f = kernels::f32::visible_slope({float(kf.mean_x), float(kf.mean_y)},
-                                               {float(kf.var_x), float(kf.var_y), float(kf.c_xy)}, float(kf.theta), float(kf.phi));
+    const auto f =
+        kernels::f32::visible_slope({float(kf.mean_x), float(kf.mean_y)},
+                                    {float(kf.var_x), float(kf.var_y), float(kf.c_xy)}, float(kf.theta), float(kf.phi));
     const Errors e32 = errors(gkf, f);
     const Errors floor32 = input_floor(kf, gkf, 1.2e-7);
     EXPECT_LE(e32.log_N, 2e-4 + 4 * floor32.log_N);
@@ -129,7 +130,8 @@ TEST(VisibleSlope, CovariantUnderRotation) {
   const glm::dmat2 sigma_r = rot * sigma * glm::transpose(rot);
   for (double theta : {0.2, 1.0, 1.5}) {
     const auto d = kernels::f64::visible_slope(mean, {sigma[0][0], sigma[1][1], sigma[0][1]}, theta, 0.3);
-    const auto r = kernels::f64::visible_slope(rot * mean, {sigma_r[0][0], sigma_r[1][1], sigma_r[0][1]}, theta, 0.3 + alpha);
+    const auto r =
+        kernels::f64::visible_slope(rot * mean, {sigma_r[0][0], sigma_r[1][1], sigma_r[0][1]}, theta, 0.3 + alpha);
     const glm::dmat2 cov(d.cov.x, d.cov.z, d.cov.z, d.cov.y);
     const glm::dmat2 cov_r = rot * cov * glm::transpose(rot);
     const glm::dvec2 mean_r = rot * d.mean;
@@ -146,7 +148,8 @@ TEST(VisibleSlope, CovariantUnderRotation) {
 // weighted by its projected area max(0, omega.n)/n_z = max(0, W(s)) (eq. 12). The weighted mean,
 // covariance and mean weight (= N) must match the kernel within 5 Monte Carlo standard errors.
 TEST(VisibleSlope, MatchesWeightedSlopeSamples) {
-  const SlopeCase cases[] = {{1, 0, 1, 1, 0, 1.56, 0}, {0.3, -0.2, 0.2, 0.1, 0.05, 0.9, 0.4}, {1.5, 0.5, 0.5, 0.3, -0.2, 0.8, 0.2}};
+  const SlopeCase cases[] = {
+      {1, 0, 1, 1, 0, 1.56, 0}, {0.3, -0.2, 0.2, 0.1, 0.05, 0.9, 0.4}, {1.5, 0.5, 0.5, 0.3, -0.2, 0.8, 0.2}};
   std::mt19937_64 rng(11);
   std::normal_distribution<double> normal;
   for (const SlopeCase& k : cases) {

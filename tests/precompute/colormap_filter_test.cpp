@@ -30,8 +30,7 @@ std::string sci(double v) {
 
 double max_rel(glm::dvec3 value, LongVec3 ref) {
   double worst = 0;
-  for (int i = 0; i < 3; ++i)
-    worst = std::max(worst, static_cast<double>(std::abs((value[i] - ref[i]) / ref[i])));
+  for (int i = 0; i < 3; ++i) worst = std::max(worst, static_cast<double>(std::abs((value[i] - ref[i]) / ref[i])));
   return worst;
 }
 
@@ -51,7 +50,8 @@ TEST(ColormapSegment, MatchesQuadratureOnGrid) {
       const double nearest = mu < 0.2 ? 0.2 - mu : (mu > 0.7 ? mu - 0.7 : 0.0);
       if (nearest > 37.0 * sigma) continue;
       const glm::dvec3 got = k64::colormap_segment_gaussian(0.2, 0.7, kC0, kC1, mu, sigma);
-      worst = std::max(worst, max_rel(got, facet::test::segment_reference(0.2L, 0.7L, LongVec3(kC0), LongVec3(kC1), mu, sigma)));
+      worst = std::max(
+          worst, max_rel(got, facet::test::segment_reference(0.2L, 0.7L, LongVec3(kC0), LongVec3(kC1), mu, sigma)));
     }
   RecordProperty("worst_rel_f64", sci(worst));
   EXPECT_LT(worst, 1e-11);
@@ -68,7 +68,8 @@ TEST(ColormapSegment, FarTailsKeepRelativeAccuracy) {
         // [x0, x1] at distance z sigma from mu = 0 (sigma = 1), on either side.
         const double x0 = side > 0 ? z : -z - width, x1 = x0 + width;
         const glm::dvec3 got = k64::colormap_segment_gaussian(x0, x1, kC0, kC1, 0.0, 1.0);
-        worst = std::max(worst, max_rel(got, facet::test::segment_reference(x0, x1, LongVec3(kC0), LongVec3(kC1), 0.0L, 1.0L)));
+        worst = std::max(
+            worst, max_rel(got, facet::test::segment_reference(x0, x1, LongVec3(kC0), LongVec3(kC1), 0.0L, 1.0L)));
       }
   RecordProperty("worst_rel_f64", sci(worst));
   EXPECT_LT(worst, 1e-12);
@@ -212,7 +213,7 @@ TEST(ColormapFilter, ExtremeInputsStayFiniteAndBounded) {
     for (double sigma : {0.0, 1e-300, 1e-20, 1e-3, 1.0, 1e10, 1e300}) {
       const glm::dvec3 d = facet::precompute::filtered_colormap_exact(viridis, mu, sigma);
       const glm::vec3 f = facet::precompute::filtered_colormap_exact_f32(viridis, static_cast<float>(mu),
-                                                                          static_cast<float>(std::min(sigma, 1e30)));
+                                                                         static_cast<float>(std::min(sigma, 1e30)));
       for (int i = 0; i < 3; ++i) {
         EXPECT_TRUE(std::isfinite(d[i]) && d[i] >= 0.0 && d[i] <= 1.0 + 1e-12) << mu << " " << sigma;
         EXPECT_TRUE(std::isfinite(f[i]) && f[i] >= 0.0f && f[i] <= 1.0f + 1e-5f) << mu << " " << sigma;

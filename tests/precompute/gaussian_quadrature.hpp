@@ -69,10 +69,12 @@ inline LongVec3 colormap_reference(const Colormap& map, long double mu, long dou
   const bool steps = map.interpolation() == Colormap::Interpolation::Steps;
   auto value = [&](long double t) { return lo + width * t; };
   const long double far = 1e4L * (sigma + 1);
-  LongVec3 sum = segment_reference(value(x.front()) - far, value(x.front()), LongVec3(c.front()), LongVec3(c.front()), mu, sigma) +
-                 segment_reference(value(x.back()), value(x.back()) + far, LongVec3(c.back()), LongVec3(c.back()), mu, sigma);
+  LongVec3 sum =
+      segment_reference(value(x.front()) - far, value(x.front()), LongVec3(c.front()), LongVec3(c.front()), mu, sigma) +
+      segment_reference(value(x.back()), value(x.back()) + far, LongVec3(c.back()), LongVec3(c.back()), mu, sigma);
   for (std::size_t k = 0; k + 1 < x.size(); ++k)
-    sum += segment_reference(value(x[k]), value(x[k + 1]), LongVec3(c[k]), LongVec3(steps ? c[k] : c[k + 1]), mu, sigma);
+    sum +=
+        segment_reference(value(x[k]), value(x[k + 1]), LongVec3(c[k]), LongVec3(steps ? c[k] : c[k + 1]), mu, sigma);
   return sum;
 }
 

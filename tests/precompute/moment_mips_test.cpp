@@ -165,8 +165,8 @@ TEST(MomentMips, AnisotropicTapsCombineAsAMixture) {
   const ScalarField f = random_field(16, 8, 21);
   const MomentMips mips = scalar_moment_mips(f);
   const int row = 5;
-  const MeanVariance got = lookup_scalar_moments_anisotropic(mips, {4.0 / 16, (row + 0.5) / 8}, {8.0 / 16, 0.0},
-                                                             {0.0, 1.0 / 8}, 16);
+  const MeanVariance got =
+      lookup_scalar_moments_anisotropic(mips, {4.0 / 16, (row + 0.5) / 8}, {8.0 / 16, 0.0}, {0.0, 1.0 / 8}, 16);
   double mean = 0, within = 0;
   for (int i = 0; i < 8; ++i) {
     mean += f.at(i, row) / 8;

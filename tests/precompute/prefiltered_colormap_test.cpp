@@ -96,7 +96,8 @@ TEST(PrefilteredColormap, FloatLookupMatchesDouble) {
   double step = 0;  // largest difference between neighbouring nodes, per channel
   for (int j = 0; j < table.grid.sigma_count; ++j)
     for (int i = 0; i + 1 < table.grid.mu_count; ++i) {
-      const glm::dvec3 d = glm::abs(table.values[(j * table.grid.mu_count) + i + 1] - table.values[(j * table.grid.mu_count) + i]);
+      const glm::dvec3 d =
+          glm::abs(table.values[(j * table.grid.mu_count) + i + 1] - table.values[(j * table.grid.mu_count) + i]);
       step = std::max({step, d.x, d.y, d.z});
     }
   const double eps_f = 1.2e-7;

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "support/temp_dir.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -54,8 +54,8 @@ class Bench : public ::testing::Test {
 
 // The keys every successful record has, with their JSON types (issue #8 and docs/report.md).
 void expect_record_schema(const json& r, const fs::path& out) {
-  for (const char* key : {"scene", "scene_file", "method", "device", "machine", "facet_version", "time_source", "image",
-                          "heatmap"})
+  for (const char* key :
+       {"scene", "scene_file", "method", "device", "machine", "facet_version", "time_source", "image", "heatmap"})
     EXPECT_TRUE(r.contains(key) && r[key].is_string()) << key << " in " << r.dump();
   for (const char* key : {"time_ms", "time_ms_min", "time_ms_max", "wall_ms", "wall_ms_min", "wall_ms_max", "rmse",
                           "rel_mse", "max_abs", "ssim", "flip", "gpu_ms", "prepare_ms"})

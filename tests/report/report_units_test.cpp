@@ -8,7 +8,6 @@
 
 #include <gtest/gtest.h>
 
-#include "support/temp_dir.hpp"
 #include "common/content_hash.hpp"
 #include "report/headline.hpp"
 #include "report/method_catalogue.hpp"
@@ -18,6 +17,7 @@
 #include "report/thumbnail.hpp"
 #include "report/timing.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/temp_dir.hpp"
 
 namespace facet::report {
 namespace {
@@ -76,8 +76,8 @@ bool tags_balanced(const std::string& xml) {
 }
 
 TEST(SvgPlot, IsWellFormedAndPlacesPointsOnLogScales) {
-  const std::vector<PlotPoint> points = {{"a<1>", 1.0, 0.1}, {"b", 10.0, 0.01}, {"c", 100.0, 0.001},
-                                         {"slow & bad", 100.0, 0.1}, {"dropped", 0.0, 1.0}};
+  const std::vector<PlotPoint> points = {
+      {"a<1>", 1.0, 0.1}, {"b", 10.0, 0.01}, {"c", 100.0, 0.001}, {"slow & bad", 100.0, 0.1}, {"dropped", 0.0, 1.0}};
   const std::string svg = speed_error_svg(points, {"t", "time", "error"});
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_TRUE(tags_balanced(svg));
@@ -150,9 +150,9 @@ BenchRecord record(const std::string& scene, const std::string& method, double m
 
 TEST(Headline, PicksTheCheapestSupersamplingAtLeastAsAccurate) {
   std::vector<BenchRecord> records = {record("a", "filtered", 2, 0.010), record("a", "ss:2", 3, 0.020),
-                                      record("a", "ss:8", 40, 0.009),   record("a", "ss:16", 160, 0.005),
-                                      record("a", "mip", 1, 0.001),     record("b", "filtered", 1, 0.001),
-                                      record("b", "ss:16", 50, 0.002),  record("c", "naive", 1, 0.1)};
+                                      record("a", "ss:8", 40, 0.009),    record("a", "ss:16", 160, 0.005),
+                                      record("a", "mip", 1, 0.001),      record("b", "filtered", 1, 0.001),
+                                      record("b", "ss:16", 50, 0.002),   record("c", "naive", 1, 0.1)};
   records.push_back(record("a", "ss:4", 10, 0.010));
   records.back().error = "failed";  // an error record never counts
   const std::vector<Headline> lines = headlines(records);
@@ -176,14 +176,16 @@ TEST(MethodCatalogue, AppliesTextureMethodsOnlyToScenesWithSubPixelDetail) {
   SceneFeatures textured;
   textured.colormap_texture = true;
   const auto quick = names(select_methods(textured, true, {}));
-  EXPECT_EQ(quick, (std::vector<std::string>{"naive", "mip", "colormip", "filtered", "filtered:table", "ss:1", "ss:2", "ss:4",
-                                      "ss:8"}));
-  EXPECT_EQ(names(select_methods(plain, false, {"ss:99", "filtered"})), (std::vector<std::string>{"ss:99", "filtered"}));
+  EXPECT_EQ(quick, (std::vector<std::string>{"naive", "mip", "colormip", "filtered", "filtered:table", "ss:1", "ss:2",
+                                             "ss:4", "ss:8"}));
+  EXPECT_EQ(names(select_methods(plain, false, {"ss:99", "filtered"})),
+            (std::vector<std::string>{"ss:99", "filtered"}));
   SceneFeatures grating;
   grating.diffraction = true;
-  EXPECT_EQ(names(select_methods(grating, true, {})),
-            (std::vector<std::string>{"naive", "diffraction:spectral", "diffraction:preintegrated", "diffraction:orders",
-                                      "wavelengths:8", "wavelengths:16", "wavelengths:32", "ss:1", "ss:2", "ss:4"}));
+  EXPECT_EQ(
+      names(select_methods(grating, true, {})),
+      (std::vector<std::string>{"naive", "diffraction:spectral", "diffraction:preintegrated", "diffraction:orders",
+                                "wavelengths:8", "wavelengths:16", "wavelengths:32", "ss:1", "ss:2", "ss:4"}));
   const auto full = names(select_methods(grating, false, {}));
   EXPECT_EQ(full.back(), "ss:4");  // ss:8 and ss:16 would trace the spectral loop 64 and 256 times per pixel
   EXPECT_EQ(names(select_methods(grating, false, {"ss:8"})), (std::vector<std::string>{"ss:8"}));  // on request
@@ -206,7 +208,8 @@ TEST(ReferenceCacheKey, CoversEveryReferencedFileAndSetting) {
   write(dir / "meshes/m.gltf", R"({"buffers": [{"uri": "m.bin"}, {"uri": "data:abc"}]})");
   write(dir / "meshes/m.bin", "0123");
   const auto deps = scene_dependencies(dir / "scene.json");
-  EXPECT_EQ(deps, (std::vector<std::filesystem::path>{dir / "meshes/m.bin", dir / "meshes/m.gltf", dir / "scene.json"}));
+  EXPECT_EQ(deps,
+            (std::vector<std::filesystem::path>{dir / "meshes/m.bin", dir / "meshes/m.gltf", dir / "scene.json"}));
   const ReferenceKey key{dir / "scene.json", "1.0", 48, 27, 4, 1};
   const std::string base = reference_cache_key(key);
   EXPECT_EQ(base.size(), 32u);

@@ -37,7 +37,9 @@ std::array<double, 7> pose(const Camera& c) {
   return {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.fov_y_deg};
 }
 
-std::array<double, 7> pose_at(const Scene& scene, double t) { return pose(camera_on_path(*scene.camera_path, scene.camera, t)); }
+std::array<double, 7> pose_at(const Scene& scene, double t) {
+  return pose(camera_on_path(*scene.camera_path, scene.camera, t));
+}
 
 TEST(CameraPath, KeysAreHitExactlyAndFovDefaultsToTheCamera) {
   for (const char* interpolation : {"linear", "smooth"}) {
@@ -68,8 +70,10 @@ TEST(CameraPath, LinearIsTheStraightLineBetweenKeys) {
 // Left and right derivatives at time t by second-order one-sided differences, step e:
 // f'(t) ≈ ±(3 f(t) - 4 f(t ∓ e) + f(t ∓ 2e)) / (2e), error O(e²).
 double kink(const Scene& scene, double t, int k, double e) {
-  const double left = (3 * pose_at(scene, t)[k] - 4 * pose_at(scene, t - e)[k] + pose_at(scene, t - 2 * e)[k]) / (2 * e);
-  const double right = -(3 * pose_at(scene, t)[k] - 4 * pose_at(scene, t + e)[k] + pose_at(scene, t + 2 * e)[k]) / (2 * e);
+  const double left =
+      (3 * pose_at(scene, t)[k] - 4 * pose_at(scene, t - e)[k] + pose_at(scene, t - 2 * e)[k]) / (2 * e);
+  const double right =
+      -(3 * pose_at(scene, t)[k] - 4 * pose_at(scene, t + e)[k] + pose_at(scene, t + 2 * e)[k]) / (2 * e);
   return std::abs(left - right);
 }
 
@@ -133,7 +137,8 @@ TEST(CameraPath, BadPathsAreOneLineErrors) {
   const std::string key_a = R"({"frame": 0, "position": [0, 1, 2], "target": [0, 0, 0]})";
   EXPECT_EQ(load_error(R"({"frames": 0, "keys": [)" + key_a + "]}"),
             "bad.json: camera_path.frames must be an integer in [1, 1000000], got 0");
-  EXPECT_EQ(load_error(R"({"frames": 5, "keys": []})"), "bad.json: camera_path.keys must be a non-empty array of keyframes, got []");
+  EXPECT_EQ(load_error(R"({"frames": 5, "keys": []})"),
+            "bad.json: camera_path.keys must be a non-empty array of keyframes, got []");
   EXPECT_EQ(load_error(R"({"frames": 5, "interpolation": "cubic", "keys": [)" + key_a + "]}"),
             "bad.json: camera_path.interpolation must be linear or smooth, got \"cubic\"");
   EXPECT_EQ(load_error(R"({"frames": 5, "keys": [)" + key_a + "," + key_a + "]}"),

@@ -8,8 +8,8 @@
 #include <limits>
 #include <random>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <tiny_gltf.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "common/error.hpp"
 #include "gltf_test_writer.hpp"

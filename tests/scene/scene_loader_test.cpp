@@ -131,7 +131,8 @@ TEST(SceneLoader, EachInvalidValueIsNamed) {
       {"/materials/grey/albedo", Json::array({0.5, 1.5, 0.5}),
        "scenes/x.json: materials.grey.albedo must have components in [0, 1.0], got [0.5,1.5,0.5]"},
       {"/materials/grey/type", "glass",
-       "scenes/x.json: materials.grey.type must be one of: lambert, microflake, colormap_texture, microsurface, diffraction, got \"glass\""},
+       "scenes/x.json: materials.grey.type must be one of: lambert, microflake, colormap_texture, microsurface, "
+       "diffraction, got \"glass\""},
       {"/materials/grey", Json{{"type", "microflake"}, {"ndf", "phong"}, {"param", 0.5}},
        "scenes/x.json: materials.grey.ndf must be one of: beckmann, ggx, kk, sg, got \"phong\""},
       {"/materials/grey", Json{{"type", "microflake"}, {"ndf", "kk"}, {"param", 1.0}},

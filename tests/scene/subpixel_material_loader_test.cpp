@@ -5,8 +5,8 @@
 #include <png.h>
 
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 
 #include "common/error.hpp"
@@ -121,8 +121,9 @@ TEST(SubpixelMaterials, ExrAndPngSources) {
   const std::vector<std::uint8_t> rgb(12, 128);
   write_png_rgb8(dir / "rgb.png", 2, 2, rgb);
   m["texture"] = {{"file", "rgb.png"}};
-  EXPECT_EQ(error_of(scene_with(m, kSphere), dir / "x.json"),
-            file + ": materials.m.texture.file: " + (dir / "rgb.png").string() + ": a scalar texture must be a grey PNG");
+  EXPECT_EQ(
+      error_of(scene_with(m, kSphere), dir / "x.json"),
+      file + ": materials.m.texture.file: " + (dir / "rgb.png").string() + ": a scalar texture must be a grey PNG");
 }
 
 // A 16-bit grey PNG written here with libpng, samples stored big-endian as the PNG format requires
@@ -187,13 +188,16 @@ struct Case {
 TEST(SubpixelMaterials, EachInvalidValueIsNamed) {
   const std::string f = "scenes/x.json: ";
   const std::vector<Case> texture_cases = {
-      {"/materials/m/colormap", "jet", f + "materials.m.colormap: unknown colour map 'jet' (built-in: viridis, magma, inferno, plasma)"},
+      {"/materials/m/colormap", "jet",
+       f + "materials.m.colormap: unknown colour map 'jet' (built-in: viridis, magma, inferno, plasma)"},
       {"/materials/m/colormap", Json::parse(R"({"points": [[0, [0,0,0]], [0, [1,1,1]]]})"),
        f + "materials.m.colormap: colour map positions must increase strictly"},
       {"/materials/m/colormap", Json::parse(R"({"points": [[0, [0,0,0]], [1, [1,2,1]]]})"),
-       f + "materials.m.colormap must have colours in [0, 1] (it is an albedo), got {\"points\":[[0,[0,0,0]],[1,[1,2,1]]]}"},
+       f + "materials.m.colormap must have colours in [0, 1] (it is an albedo), got "
+           "{\"points\":[[0,[0,0,0]],[1,[1,2,1]]]}"},
       {"/materials/m/colormap", Json::parse(R"({"points": [[0, [0,0]]]})"),
-       f + "materials.m.colormap.points must be an array of [position, [r, g, b]] pairs with finite numbers, got [[0,[0,0]]]"},
+       f + "materials.m.colormap.points must be an array of [position, [r, g, b]] pairs with finite numbers, got "
+           "[[0,[0,0]]]"},
       {"/materials/m/colormap", Json::parse(R"({"builtin": "viridis", "interpolation": "cubic"})"),
        f + "materials.m.colormap.interpolation must be \"linear\" or \"steps\", got \"cubic\""},
       {"/materials/m/colormap", Json::parse(R"({"builtin": "viridis", "domain": [1, 0]})"),
@@ -204,7 +208,8 @@ TEST(SubpixelMaterials, EachInvalidValueIsNamed) {
        f + "materials.m.texture must have exactly one of \"file\" or \"noise\""},
       {"/materials/m/texture", Json::parse(R"({"gaussian": {}})"),
        f + "materials.m.texture must have exactly one of \"file\" or \"noise\""},
-      {"/materials/m/texture/noise/octaves", 0, f + "materials.m.texture.noise.octaves must be an integer in [1, 24], got 0"},
+      {"/materials/m/texture/noise/octaves", 0,
+       f + "materials.m.texture.noise.octaves must be an integer in [1, 24], got 0"},
       {"/materials/m/texture/noise/gain", 2, f + "materials.m.texture.noise noise gain must be in [0, 1], got 2"},
       {"/materials/m/texture/noise/sead", 2,
        f + "unknown key \"sead\" in materials.m.texture.noise (known keys: base_frequency, gain, height, lacunarity, "
@@ -224,10 +229,13 @@ TEST(SubpixelMaterials, EachInvalidValueIsNamed) {
        f + "materials.m.specular.alpha must have both components in [1e-3, 1e3], got [0.1,0]"},
       {"/materials/m/specular/reflectance", Json::array({0.1, 2, 0}),
        f + "materials.m.specular.reflectance must have components in [0, 1.0], got [0.1,2,0]"},
-      {"/materials/m/height/gaussian/corr_x", -1, f + "materials.m.height.gaussian.corr_x must be a positive number, got -1"},
-      {"/materials/m/height/gaussian/width", 1, f + "materials.m.height.gaussian.width must be an integer in [2, 8192], got 1"},
+      {"/materials/m/height/gaussian/corr_x", -1,
+       f + "materials.m.height.gaussian.corr_x must be a positive number, got -1"},
+      {"/materials/m/height/gaussian/width", 1,
+       f + "materials.m.height.gaussian.width must be an integer in [2, 8192], got 1"},
       {"/objects/0/size", Json::array({2, 0}), f + "objects[0].size must be [w, h] with w, h > 0, got [2,0]"},
-      {"/objects/0/tangent", Json::array({0, 3, 0}), f + "objects[0].tangent must not be parallel to the normal, got [0,3,0]"},
+      {"/objects/0/tangent", Json::array({0, 3, 0}),
+       f + "objects[0].tangent must not be parallel to the normal, got [0,3,0]"},
       {"/objects/0/uv_scale", Json::array({0, 1}), f + "objects[0].uv_scale must have non-zero components, got [0,1]"},
   };
   for (const Case& c : microsurface_cases) {
@@ -242,8 +250,9 @@ TEST(SubpixelMaterials, EachInvalidValueIsNamed) {
             f + "materials.m needs a height_colormap, a slope_colormap or both");
   Json infinite = kFinitePlane;
   infinite.erase("size");
-  EXPECT_EQ(error_of(scene_with(kMicrosurface, infinite)),
-            f + "objects[0].material is a microsurface, which needs a finite plane (give the plane a \"size\"), got \"m\"");
+  EXPECT_EQ(
+      error_of(scene_with(kMicrosurface, infinite)),
+      f + "objects[0].material is a microsurface, which needs a finite plane (give the plane a \"size\"), got \"m\"");
   EXPECT_EQ(error_of(scene_with(kMicrosurface, kSphere)),
             f + "objects[0].material is a microsurface, which only finite planes can have, got \"m\"");
 }

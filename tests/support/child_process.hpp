@@ -11,7 +11,7 @@
 namespace facet::test {
 
 struct ChildRun {
-  int exit_code = -1;     // -1: killed by a signal
+  int exit_code = -1;       // -1: killed by a signal
   long rss_growth_kib = 0;  // child's peak RSS minus the parent's before the fork
 };
 

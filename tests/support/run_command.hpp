@@ -30,8 +30,8 @@ inline CommandResult run_command(const std::string& command, const std::string& 
              ("facet_cmd_" + std::to_string(::getpid()) + "_" + std::to_string(std::rand()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "in") << input;
-  std::string full = "(" + command + ") < '" + (dir / "in").string() + "' > '" + (dir / "out").string() +
-                     "' 2> '" + (dir / "err").string() + "'";
+  std::string full = "(" + command + ") < '" + (dir / "in").string() + "' > '" + (dir / "out").string() + "' 2> '" +
+                     (dir / "err").string() + "'";
   int status = std::system(full.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -90,7 +90,10 @@ TEST(VkRuntime, KernelsShareCompiledPipelinesPerSpecialization) {
   auto scaled_by = [&](float scale) {
     uint32_t bits;
     std::memcpy(&bits, &scale, sizeof bits);
-    return vk::KernelDesc{.name = "scale_add", .spirv = scale_add_spv, .buffer_count = 2, .push_constant_bytes = 8,
+    return vk::KernelDesc{.name = "scale_add",
+                          .spirv = scale_add_spv,
+                          .buffer_count = 2,
+                          .push_constant_bytes = 8,
                           .specialization = {{0, bits}}};
   };
   const std::size_t before = context->pipelines().size();
@@ -117,8 +120,9 @@ TEST(VkRuntime, BufferBeyondTheStorageRangeIsRefused) {
   if (range >= (VkDeviceSize(1) << 31)) GTEST_SKIP() << "device storage range too large to exceed cheaply";
   vk::Buffer big(*context, range + 256);
   vk::Buffer small(*context, 256);
-  vk::Kernel kernel(*context, {.name = "scale_add", .spirv = scale_add_spv, .buffer_count = 2,
-                               .push_constant_bytes = 8, .specialization = {}});
+  vk::Kernel kernel(
+      *context,
+      {.name = "scale_add", .spirv = scale_add_spv, .buffer_count = 2, .push_constant_bytes = 8, .specialization = {}});
   const std::array<const vk::Buffer*, 2> bindings = {&big, &small};
   uint64_t push = 0;
   EXPECT_THROW(kernel.dispatch(bindings, &push, {1, 1, 1}), Error);
@@ -133,8 +137,12 @@ TEST(VkRuntime, StorageImagesRoundTripThroughAKernel) {
   source.upload(texels.data());
   glm::uvec2 size(w, h);
   auto size_buffer = vk::Buffer::from(*context, std::span<const glm::uvec2>(&size, 1));
-  vk::Kernel kernel(*context, {.name = "image_gradient", .spirv = image_gradient_spv, .buffer_count = 1,
-                               .push_constant_bytes = 0, .image_count = 2, .specialization = {}});
+  vk::Kernel kernel(*context, {.name = "image_gradient",
+                               .spirv = image_gradient_spv,
+                               .buffer_count = 1,
+                               .push_constant_bytes = 0,
+                               .image_count = 2,
+                               .specialization = {}});
   const std::array<const vk::Buffer*, 1> buffers = {&size_buffer};
   const std::array<const vk::StorageImage*, 2> images = {&source, &target};
   kernel.dispatch(buffers, images, nullptr, {(w + 7) / 8, (h + 7) / 8, 1});

@@ -23,5 +23,6 @@ namespace {
 // "<unknown module>" (128 bytes per instance). Keeping the driver mapped for the life of the
 // process leaves them reachable, so nothing is reported and no suppression is needed. A system
 // without lavapipe simply has nothing to pin.
-[[maybe_unused]] const bool kLavapipePinned = dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE) != nullptr;
+[[maybe_unused]] const bool kLavapipePinned =
+    dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE) != nullptr;
 }  // namespace

@@ -21,9 +21,12 @@ inline std::optional<DiffractionMethod> parse_diffraction_method(const std::stri
 
 inline const char* diffraction_method_name(DiffractionMethod method) {
   switch (method) {
-    case DiffractionMethod::Preintegrated: return "preintegrated";
-    case DiffractionMethod::Orders: return "orders";
-    default: return "spectral";
+    case DiffractionMethod::Preintegrated:
+      return "preintegrated";
+    case DiffractionMethod::Orders:
+      return "orders";
+    default:
+      return "spectral";
   }
 }
 

@@ -107,7 +107,8 @@ Grating grating_from_json(const nlohmann::json& spec, const std::string& source,
   // The window must cover at least a quarter patch, so at most a few DFT bins lie under it
   // (docs/diffraction.md, "Coherence window").
   g.coherence_nm = 1000.0 * reader.positive_number("coherence_um", g.period_nm() / 1000.0);
-  if (g.coherence_nm < 0.25 * g.period_nm()) reader.fail("coherence_um", "must be at least a quarter of the patch size");
+  if (g.coherence_nm < 0.25 * g.period_nm())
+    reader.fail("coherence_um", "must be at least a quarter of the patch size");
   g.ior = reader.number("ior", 1.56);
   if (!(g.ior >= 1.0 && g.ior <= 5.0)) reader.fail("ior", "must lie in [1, 5]");
   reader.finish();

@@ -11,11 +11,11 @@
 namespace facet::diffraction {
 
 struct Grating {
-  int samples = 0;             // the patch is samples x samples heights, row-major, y rows
-  double sample_nm = 0.0;      // spacing of the samples; the patch period is T = samples * sample_nm
+  int samples = 0;         // the patch is samples x samples heights, row-major, y rows
+  double sample_nm = 0.0;  // spacing of the samples; the patch period is T = samples * sample_nm
   std::vector<double> height_nm;
-  double coherence_nm = 0.0;   // standard deviation of the Gaussian spatial-coherence window
-  double ior = 1.56;           // refractive index behind Schlick's R0 (keratin by default)
+  double coherence_nm = 0.0;  // standard deviation of the Gaussian spatial-coherence window
+  double ior = 1.56;          // refractive index behind Schlick's R0 (keratin by default)
 
   double period_nm() const { return samples * sample_nm; }
 };
