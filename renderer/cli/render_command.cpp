@@ -73,7 +73,7 @@ void add_render_command(CLI::App& app, Action& action) {
   command
       ->add_option("--method", options->method,
                    "How sub-pixel detail becomes a pixel: naive, mip, colormip, ss:K (K x K rays), filtered, "
-                   "filtered:table")
+                   "filtered:table; M:ss:K runs footprint method M per stratum of ss:K (filtered:ss:2)")
       ->capture_default_str();
   command->add_option("--diffraction", options->diffraction,
                       "How diffraction materials become colours: spectral, preintegrated or orders (default: each "

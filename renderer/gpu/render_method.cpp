@@ -1,6 +1,7 @@
 #include "gpu/render_method.hpp"
 
 #include <cstdlib>
+#include <optional>
 
 #include "common/error.hpp"
 
@@ -8,14 +9,38 @@ namespace facet::gpu {
 
 namespace {
 constexpr int kMaxSamplesPerAxis = 16;
+
+// K of "ss:K" in `count` (the text after "ss:"), or 0 if it is not an integer in [1, kMaxSamplesPerAxis].
+int parse_samples_per_axis(const std::string& count) {
+  char* end = nullptr;
+  const long k = std::strtol(count.c_str(), &end, 10);
+  return !count.empty() && *end == '\0' && k >= 1 && k <= kMaxSamplesPerAxis ? static_cast<int>(k) : 0;
 }
+
+// The footprint methods by name; each may also run per stratum of ss:K ("filtered:ss:4").
+std::optional<RenderMethod::Texture> parse_footprint_method(const std::string& text) {
+  if (text == "mip") return RenderMethod::Texture::Mip;
+  if (text == "colormip") return RenderMethod::Texture::Colormip;
+  if (text == "filtered") return RenderMethod::Texture::Filtered;
+  if (text == "filtered:table") return RenderMethod::Texture::FilteredTable;
+  return std::nullopt;
+}
+
+std::string samples_error(const std::string& text) {
+  return "--method " + text + ": K of ss:K must be an integer in [1, " + std::to_string(kMaxSamplesPerAxis) + "]";
+}
+}  // namespace
 
 RenderMethod RenderMethod::parse(const std::string& text) {
   if (text == "naive") return {};
-  if (text == "mip") return {Texture::Mip, 1};
-  if (text == "colormip") return {Texture::Colormip, 1};
-  if (text == "filtered") return {Texture::Filtered, 1};
-  if (text == "filtered:table") return {Texture::FilteredTable, 1};
+  if (auto texture = parse_footprint_method(text)) return {*texture, 1};
+  // A footprint method per stratum: each of the K x K rays filters its own stratum's footprint.
+  if (const auto at = text.find(":ss:"); at != std::string::npos) {
+    if (auto texture = parse_footprint_method(text.substr(0, at))) {
+      if (const int k = parse_samples_per_axis(text.substr(at + 4))) return {*texture, k};
+      throw Error(samples_error(text));
+    }
+  }
   if (text.rfind("diffraction:", 0) == 0) {
     RenderMethod method;
     method.diffraction.method = diffraction::parse_diffraction_method(text.substr(12));
@@ -23,33 +48,29 @@ RenderMethod RenderMethod::parse(const std::string& text) {
     throw Error("--method " + text + ": the diffraction method must be spectral, preintegrated or orders");
   }
   if (text.rfind("ss:", 0) == 0) {
-    const std::string count = text.substr(3);
-    char* end = nullptr;
-    const long k = std::strtol(count.c_str(), &end, 10);
-    if (!count.empty() && *end == '\0' && k >= 1 && k <= kMaxSamplesPerAxis)
-      return {Texture::Naive, static_cast<int>(k)};
-    throw Error("--method " + text + ": K of ss:K must be an integer in [1, " + std::to_string(kMaxSamplesPerAxis) +
-                "]");
+    if (const int k = parse_samples_per_axis(text.substr(3))) return {Texture::Naive, k};
+    throw Error(samples_error(text));
   }
   throw Error("--method " + text +
-              ": must be one of naive, mip, colormip, ss:K, filtered, filtered:table, "
+              ": must be one of naive, mip, colormip, ss:K, filtered, filtered:table (the last four also as M:ss:K), "
               "diffraction:spectral, diffraction:preintegrated, diffraction:orders");
 }
 
 std::string RenderMethod::name() const {
   if (diffraction.method && texture == Texture::Naive && samples_per_axis == 1)
     return std::string("diffraction:") + diffraction::diffraction_method_name(*diffraction.method);
-  if (samples_per_axis > 1 || texture == Texture::Naive)
-    return samples_per_axis > 1 ? "ss:" + std::to_string(samples_per_axis) : "naive";
+  const std::string strata = samples_per_axis > 1 ? "ss:" + std::to_string(samples_per_axis) : "";
   switch (texture) {
+    case Texture::Naive:
+      return strata.empty() ? "naive" : strata;
     case Texture::Mip:
-      return "mip";
+      return strata.empty() ? "mip" : "mip:" + strata;
     case Texture::Colormip:
-      return "colormip";
+      return strata.empty() ? "colormip" : "colormip:" + strata;
     case Texture::FilteredTable:
-      return "filtered:table";
+      return strata.empty() ? "filtered:table" : "filtered:table:" + strata;
     default:
-      return "filtered";
+      return strata.empty() ? "filtered" : "filtered:" + strata;
   }
 }
 

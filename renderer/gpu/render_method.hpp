@@ -5,6 +5,8 @@
 //   ss:K       K x K stratified rays per pixel of `naive` (K in 1..16)
 //   filtered   the footprint's Gaussian of texture values integrated against the colour map
 //   filtered:table   the same Gaussian looked up in the colour map's prefiltered table T(mu, sigma)
+//   M:ss:K     footprint method M (mip, colormip, filtered, filtered:table) per stratum of ss:K, each
+//              ray with its stratum's footprint: the strata resolve geometric edges, M the detail within
 //   diffraction:M    `naive`, with every diffraction material rendered by method M (spectral,
 //                    preintegrated, orders; scene/grating/diffraction_method.hpp)
 #pragma once

@@ -52,6 +52,10 @@ const std::vector<CatalogueEntry>& method_catalogue() {
       {"colormip", has_subpixel_detail, true, "colormip"},
       {"filtered", has_subpixel_detail, true, "filtered"},
       {"filtered:table", has_subpixel_detail, true, "filtered:table"},
+      // filtered per stratum: the strata antialias geometric edges (silhouettes, a traced field's
+      // occlusions), filtered the detail within each stratum's footprint.
+      {"filtered:ss:2", has_subpixel_detail, true, "filtered:ss:2"},
+      {"filtered:ss:4", has_subpixel_detail, false, "filtered:ss:4"},
       // Diffraction (issue 11): the three methods at the material's own settings, then the spectral
       // integral with fewer or more wavelength samples than the material's tolerance picks, and
       // with fewer Taylor terms.

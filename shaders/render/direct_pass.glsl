@@ -79,7 +79,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE)  // finite planes only (scene loader)
     return microsurface_radiance(m, planes[hit.index],
                                  microsurface_footprint(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
-                                                        camera_ray(film + vec2(0.0, pixel_step))),
+                                                        camera_ray(film + vec2(0.0, pixel_step)), planes[hit.index].normal.xyz),
                                  d, l, visibility, false);
   if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
     return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,

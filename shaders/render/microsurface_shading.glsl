@@ -128,22 +128,42 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
 }
 
 // The pixel's footprint on microsurface `m` on `plane`, hit at p by the ray o + t d; d_dx, d_dy: the
-// rays through the neighbouring pixel positions. q: the hit in texels from the rectangle's (-w/2, -h/2)
-// corner, where the field's vertex (0, 0) sits; size: the field in texels; duv_*: the footprint's
-// axes in field uv (period = the field), as for colour-mapped textures.
+// rays through the neighbouring pixel positions, which meet the plane through p with normal
+// n_surface (the rectangle's, or the traced surface's: T4 of docs/microsurface_filtering.md); their
+// offsets are projected onto the rectangle (the field is a graph over it). q: the hit in texels from
+// the rectangle's (-w/2, -h/2) corner, where the field's vertex (0, 0) sits; size: the field in
+// texels; duv_*: the footprint's axes in field uv (period = the field), as for colour-mapped textures.
 struct MicrosurfaceFootprint {
   vec2 q, size, duv_dx, duv_dy;
 };
 
 MicrosurfaceFootprint microsurface_footprint(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx,
-                                             vec3 d_dy) {
+                                             vec3 d_dy, vec3 n_surface) {
   vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
   float delta = m.albedo.w;
   vec2 size = vec2(texture_levels[m.texture.x].info.yz);
   vec3 r = p - plane.point.xyz;
   vec3 dpdu = t * (size.x * delta), dpdv = b * (size.y * delta);
   return MicrosurfaceFootprint((vec2(dot(r, t), dot(r, b)) + plane.uv_half_size.zw) / delta, size,
-                               uv_differential(o, d_dx, p, n, dpdu, dpdv), uv_differential(o, d_dy, p, n, dpdu, dpdv));
+                               uv_differential(o, d_dx, p, n_surface, dpdu, dpdv),
+                               uv_differential(o, d_dy, p, n_surface, dpdu, dpdv));
+}
+
+// The pixel's footprint on the surface `filtered` traces, from its footprint flat_fp on the flat
+// rectangle (T4 of docs/microsurface_filtering.md): the neighbouring rays meet the plane through the
+// hit p whose normal is the field's mean slope over flat_fp (the first moment chain at its level).
+// On a flank facing the viewer that footprint is shorter than flat_fp; on a flank the rays graze it
+// grows without bound, where the real surface curves away within the bump, so each axis is kept no
+// longer than flat_fp's.
+MicrosurfaceFootprint microsurface_footprint_on_surface(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p,
+                                                        vec3 d_dx, vec3 d_dy, MicrosurfaceFootprint flat_fp) {
+  float lod = anisotropic_footprint(flat_fp.duv_dx, flat_fp.duv_dy, flat_fp.size, float(m.texture.y), kMaxAnisotropicTaps).lod;
+  vec2 s = sample_trilinear(m.texture.x + 1u, m.texture.y, flat_fp.q / flat_fp.size, lod).zw;
+  vec3 t = plane.tangent.xyz, n = plane.normal.xyz;
+  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy, normalize(n - s.x * t - s.y * cross(n, t)));
+  if (length(fp.duv_dx) > length(flat_fp.duv_dx)) fp.duv_dx = flat_fp.duv_dx;
+  if (length(fp.duv_dy) > length(flat_fp.duv_dy)) fp.duv_dy = flat_fp.duv_dy;
+  return fp;
 }
 
 // How much of `filtered`'s answer comes from the traced field: 1 where the footprint's longer axis is
@@ -159,7 +179,7 @@ float microsurface_trace_weight(MicrosurfaceFootprint fp) {
 float microsurface_trace_level(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 d_dx, vec3 d_dy) {
   float t = intersect_plane(o, d, plane.point.xyz, plane.normal.xyz, 0.0, 1e30);
   if (t <= 0.0) return 0.0;
-  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, o + t * d, d_dx, d_dy);
+  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, o + t * d, d_dx, d_dy, plane.normal.xyz);
   return anisotropic_footprint(fp.duv_dx, fp.duv_dy, fp.size, float(m.texture.y), kMaxAnisotropicTaps).lod;
 }
 

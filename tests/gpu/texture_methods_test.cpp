@@ -132,5 +132,18 @@ TEST(TextureMethods, UnknownMethodIsAnError) {
   EXPECT_THROW(gpu::RenderMethod::parse("filtered:"), Error);
 }
 
+// M:ss:K: footprint method M per stratum; the text survives a round trip and K keeps ss:K's range.
+TEST(TextureMethods, FootprintMethodsPerStratum) {
+  const gpu::RenderMethod filtered = gpu::RenderMethod::parse("filtered:ss:3");
+  EXPECT_EQ(filtered.texture, gpu::RenderMethod::Texture::Filtered);
+  EXPECT_EQ(filtered.samples_per_axis, 3);
+  for (const char* text : {"filtered:ss:2", "filtered:table:ss:4", "colormip:ss:16", "mip:ss:2"})
+    EXPECT_EQ(gpu::RenderMethod::parse(text).name(), text);
+  EXPECT_EQ(gpu::RenderMethod::parse("filtered:ss:1").name(), "filtered");
+  for (const char* text :
+       {"filtered:ss:0", "filtered:ss:17", "filtered:ss:", "filtered:ss:2x", "naive:ss:2", "ss:2:ss:2"})
+    EXPECT_THROW(gpu::RenderMethod::parse(text), Error) << text;
+}
+
 }  // namespace
 }  // namespace facet
