@@ -15,8 +15,10 @@ using accuracy::Row;
 
 void expect_within_bounds(const std::vector<Row>& rows) {
   for (const Row& r : rows) {
-    std::printf("%s, %s: worst %.2g at %s; worst error/bound %.2g (%d points)\n", r.kernel.c_str(), r.quantity.c_str(),
-                r.worst, r.where.c_str(), r.excess, r.points);
+    std::printf(
+        "%s, %s: worst %.2g at %s; %.2g where well conditioned (%d points); worst error/bound %.2g (%d points)\n",
+        r.kernel.c_str(), r.quantity.c_str(), r.worst, r.where.c_str(), r.worst_conditioned, r.conditioned, r.excess,
+        r.points);
     EXPECT_GT(r.points, 0) << r.kernel << " " << r.quantity;
     EXPECT_LE(r.excess, 1.0) << r.kernel << " " << r.quantity << ": " << r.worst << " at " << r.where;
   }
