@@ -18,7 +18,7 @@ struct NormalPartialMoments {
 // P_k = k/(x + P_{k+1}), x = -t (backward recurrence of m_{k+1} = t m_k + k m_{k-1}), which is
 // cancellation-free. It is evaluated from k = K = NPM_CF_DEPTH + NPM_CF_DEPTH_X/x down. Above the threshold
 // the forward formulas lose accuracy as t falls (var_z: 4e-14 relative at t = -1.25, 2.5e-12 at t = -4 in
-// double); below it the fraction needs more terms as x falls (docs/visible_slope.md#stable-ratios).
+// double); below it the fraction needs more terms as x falls (docs/visible_slope.md, "Stable ratios").
 // Double: threshold 1.25, K = 208 at x = 1.25, 76 at x = 4, converged to eps; float: 2, K = 40, to 1e-8.
 #if REAL_IS_DOUBLE
 const real NPM_CF_THRESHOLD = real(1.25);
