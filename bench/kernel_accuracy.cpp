@@ -32,7 +32,10 @@ s̄·ω itself, so no double implementation taking these inputs can beat it. Hen
 error (it sits where the floor is largest) and the worst error over the well-conditioned points, those whose floor
 allowance is below a tenth of the target (the kernel's own accuracy). "error/bound" is the largest ratio over the
 sweep (≤ 1 passes).
-Smith Λ is a function of t alone; its allowance ε t² is the change of Λ under a relative change ε of t.
+Smith Λ is a function of t alone; its allowance ε t² is the change of Λ under a relative change ε of t. The visible
+height CDF and density are exp(x) with x = (1 + Λ) log Φ(z) (resp. Λ log Φ − z²/2): their allowance is the move of x
+under a rounding of Λ plus log Φ's own bound, (ε + 3.6e-15)|x|; the CDF's reference C^{1+Λ} is checked against
+quadrature of the density it integrates.
 
 )";
 
@@ -75,8 +78,8 @@ int main(int argc, char** argv) {
   namespace acc = facet::test::accuracy;
   const auto start = std::chrono::steady_clock::now();
   std::vector<Row> rows;
-  for (auto sweep :
-       {acc::special_function_rows, acc::masking_rows, acc::visible_slope_issue_rows, acc::visible_slope_domain_rows})
+  for (auto sweep : {acc::special_function_rows, acc::masking_rows, acc::visible_height_rows,
+                     acc::visible_slope_issue_rows, acc::visible_slope_domain_rows})
     for (const Row& r : sweep(kDensity)) rows.push_back(r);
   for (const Row& r : acc::visible_slope_extreme_rows()) rows.push_back(r);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -16,8 +16,6 @@
 #include <string>
 #include <vector>
 
-#include <boost/math/special_functions/log1p.hpp>
-
 #include "kernels/shared.hpp"
 #include "support/multiprecision_reference.hpp"
 #include "visible_slope_cases.hpp"
@@ -114,11 +112,9 @@ inline std::vector<Row> special_function_rows(int density) {
   std::vector<double> ts = log_spaced(-1e4, -1e-4, 150 * density), positive = log_spaced(1e-4, 37.5, 100 * density);
   ts.insert(ts.end(), positive.begin(), positive.end());
   for (double t : ts) {
-    const mp::Real Phi = mp::normal_tail(-mp::Real(t));
-    // log Phi = log(1 - Q(t)) for t > 0, where 1 - Q rounds to 1 even in 50 digits.
-    const mp::Real log_Phi = t > 0 ? boost::math::log1p(-mp::normal_tail(mp::Real(t))) : log(Phi);
-    ratio.add(rel(sf_phi_over_Phi(t), mp::normal_pdf(t) / Phi), 1.8e-15, 0, format("t = %.6g", t));
-    log_cdf.add(rel(sf_log_normal_cdf(t), log_Phi), 3.6e-15, 0, format("t = %.6g", t));
+    ratio.add(rel(sf_phi_over_Phi(t), mp::normal_pdf(t) / mp::normal_tail(-mp::Real(t))), 1.8e-15, 0,
+              format("t = %.6g", t));
+    log_cdf.add(rel(sf_log_normal_cdf(t), mp::log_normal_cdf(t)), 3.6e-15, 0, format("t = %.6g", t));
   }
   for (double log_q : log_spaced(-std::numbers::ln2, -1e6, 100 * density)) {
     // Residual of log Q at the returned x, turned into an error in x by d log Q/dx = -1/R(x), R = Q/phi.
@@ -148,6 +144,51 @@ inline std::vector<Row> masking_rows(int density) {
     g1.add(rel(1 / (1 + l), 1 / (1 + L)), 1e-13, 0, format("t = %.6g", t));
   }
   return {lambda.row(), g1.row()};
+}
+
+// --- Visible heights (gaussian_masking.glsl) for heights N(0, 1), so the kernel's own rounding is measured. ---
+
+// CDF = exp(x), x = (1 + Lambda) log Phi(z): a rounding of Lambda moves x by eps |x|, and log Phi's own error
+// (bounded by 16 eps = 3.6e-15 above) by 3.6e-15 |x|, which is the allowance (relative); the density likewise with
+// x = Lambda log Phi - z^2/2. sample(u) returns z with
+// CDF(z) = u; its error is the residual of log CDF at z divided by d log CDF/dz = (1 + Lambda) phi/Phi, and its
+// allowance the move of z under a rounding of log C = log u/(1 + Lambda), eps |log C| Phi/phi.
+inline std::vector<Row> visible_height_rows(int density) {
+  using namespace kernels::f64;
+  constexpr double kLogCdfAllowance = 0x1p-53 + 3.6e-15;
+  Worst cdf("visible_height_cdf", "C^(1 + Lambda)", "relative", "1e-13 + (eps + 3.6e-15) abs(log CDF)"),
+      pdf("visible_height_pdf", "(1 + Lambda) C^Lambda c", "relative", "1e-13 + (eps + 3.6e-15) abs(log pdf)"),
+      sample("visible_height_sample", "z with CDF(z) = u", "error of z / max(1, abs(z))",
+             "1e-13 + eps abs(log C) Phi/phi");
+  for (double lambda : {0.0, 1e-6, 0.7, 25.0, 1e3, 1e6, 1e8}) {
+    const mp::Real L = lambda;
+    char at[64];
+    for (int i = 0; i < 40 * density; ++i) {
+      const double z = -37 + 49.0 * i / (40 * density - 1);  // CDF and pdf from their underflow to 1 - 1e-30
+      const mp::Real log_cdf = mp::visible_height_log_cdf(z, L);
+      if (log_cdf < -700) continue;  // the kernel's CDF underflows there
+      std::snprintf(at, sizeof at, "z = %.4g, Lambda = %.3g", z, lambda);
+      cdf.add(rel(visible_height_cdf(z, 0, 1, lambda), exp(log_cdf)), 1e-13, kLogCdfAllowance * double(abs(log_cdf)),
+              at);
+      const mp::Real log_pdf = L * mp::log_normal_cdf(z) - mp::Real(z) * z / 2;
+      const mp::Real ref_pdf = (1 + L) * exp(log_pdf) / mp::kSqrt2Pi;
+      pdf.add(rel(visible_height_pdf(z, 0, 1, lambda), ref_pdf), 1e-13, kLogCdfAllowance * double(abs(log_pdf)), at);
+    }
+    std::vector<double> us = log_spaced(1e-300, 0.5, 30 * density), upper = log_spaced(0.5, 1e-9, 15 * density);
+    for (double q : upper) us.push_back(1 - q);
+    for (double u : us) {
+      const double z = visible_height_sample(u, 0, 1, lambda);
+      const mp::Real Z = z;
+      const mp::Real log_Phi = mp::log_normal_cdf(Z);
+      const mp::Real rho = mp::normal_pdf(Z) / exp(log_Phi);
+      const double dz = double(abs(((1 + L) * log_Phi - log(mp::Real(u))) / ((1 + L) * rho)));
+      const double allowance = double(0x1p-53 * abs(log(mp::Real(u)) / (1 + L)) / rho);
+      const double scale = std::max(1.0, std::abs(z));
+      std::snprintf(at, sizeof at, "u = %.4g, Lambda = %.3g", u, lambda);
+      sample.add(dz / scale, 1e-13, allowance / scale, at);
+    }
+  }
+  return {cdf.row(), pdf.row(), sample.row()};
 }
 
 // --- Visible slopes (visible_slope.glsl). ---

@@ -51,6 +51,18 @@ TEST(KernelAccuracy, ReferencesAgreeWithIndependentMethods) {
     if (x != 0) worst_erfc = std::max(worst_erfc, static_cast<double>(abs(mp::erf(X) / boost::math::erf(X) - 1)));
   }
   std::printf("integral erf/erfc vs Boost.Math erf/erfc (50 digits): %.2g\n", worst_erfc);
+
+  // The visible height density (1 + Lambda) C^Lambda c integrates to C^(1 + Lambda): int_0^inf of it at z - v
+  // (one case: Boost's 50-digit erfc costs ~0.1 ms, and exp_sinh takes ~1500 nodes).
+  const mp::Real z = 1, lambda = 25;
+  auto density = [&](const mp::Real& v) {
+    const mp::Real h = z - v, C = boost::math::erfc(-h / mp::kSqrt2) / 2;
+    return C == 0 ? C : (1 + lambda) * exp(lambda * log(C)) * mp::normal_pdf(h);
+  };
+  const double height = static_cast<double>(
+      abs(exp_sinh.integrate(density, mp::Real("1e-30")) / exp(mp::visible_height_log_cdf(z, lambda)) - 1));
+  std::printf("visible height density integrated vs C^(1 + Lambda): %.2g\n", height);
+  EXPECT_LT(height, 1e-22);
   EXPECT_LT(worst_erfc, 1e-22);
 
   double worst_slope = 0;
@@ -75,6 +87,8 @@ TEST(KernelAccuracy, ReferencesAgreeWithIndependentMethods) {
 TEST(KernelAccuracy, SpecialFunctions) { expect_within_bounds(accuracy::special_function_rows(1)); }
 
 TEST(KernelAccuracy, SmithMasking) { expect_within_bounds(accuracy::masking_rows(1)); }
+
+TEST(KernelAccuracy, VisibleHeights) { expect_within_bounds(accuracy::visible_height_rows(1)); }
 
 TEST(KernelAccuracy, VisibleSlopeIssue21Sweep) { expect_within_bounds(accuracy::visible_slope_issue_rows(1)); }
 
