@@ -1,7 +1,7 @@
 // Writes docs/kernel_accuracy.md: the worst error of each double kernel over the sweeps of
 // tests/kernels/kernel_accuracy_sweeps.hpp (the ones kernel_accuracy_test checks, here 4x denser) against
 // the 50-digit references of tests/support/multiprecision_reference.hpp.
-//   build/bench/kernel_accuracy docs/kernel_accuracy.md      (about a minute)
+//   build/bench/kernel_accuracy docs/kernel_accuracy.md      (~10 s; built with -DFACET_BUILD_BENCHMARKS=ON)
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   namespace acc = facet::test::accuracy;
   const auto start = std::chrono::steady_clock::now();
   std::vector<Row> rows;
-  for (auto sweep : {acc::special_function_rows, acc::masking_rows, acc::visible_height_rows,
+  for (auto sweep : {acc::special_function_rows, acc::masking_rows, acc::visible_height_rows, acc::beckmann_sigma_rows,
                      acc::visible_slope_issue_rows, acc::visible_slope_domain_rows})
     for (const Row& r : sweep(kDensity)) rows.push_back(r);
   for (const Row& r : acc::visible_slope_extreme_rows()) rows.push_back(r);

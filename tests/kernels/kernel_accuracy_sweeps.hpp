@@ -44,26 +44,27 @@ class Worst {
     row_.measure = std::move(measure);
     row_.bound = std::move(bound);
   }
-  // NaN counts as worst.
   void add(double error, double target, double allowance, const std::string& where) {
     ++row_.points;
-    if (!(error <= row_.worst)) {
+    if (worse(error, row_.worst)) {
       row_.worst = error;
       row_.where = where;
     }
     if (allowance < target / 10) {
       ++row_.conditioned;
-      if (!(error <= row_.worst_conditioned)) {
+      if (worse(error, row_.worst_conditioned)) {
         row_.worst_conditioned = error;
         row_.conditioned_where = where;
       }
     }
     const double excess = error / (target + allowance);
-    if (!(excess <= row_.excess)) row_.excess = excess;
+    if (worse(excess, row_.excess)) row_.excess = excess;
   }
   const Row& row() const { return row_; }
 
  private:
+  // NaN is worse than anything and stays.
+  static bool worse(double a, double b) { return !std::isnan(b) && !(a <= b); }
   Row row_;
 };
 
@@ -227,6 +228,27 @@ struct SlopeSweep {
     return out;
   }
 };
+
+// Beckmann cross-section sigma(w) = int D(m) max(0, m.w) dm (ndf_beckmann.glsl), which in slope space is
+// int p(s) max(0, w_z - s.w_xy) ds with p = N(0, alpha^2/2 I): the N of the visible slope reference for a centred law
+// (eq. 16). w = (sin theta, 0, cos theta) over theta in (0, pi), alpha from 1e-3 to 10, where sigma is a normal
+// double; error of log sigma with the visible slopes' input floor.
+inline std::vector<Row> beckmann_sigma_rows(int density) {
+  Worst sigma("ndf_beckmann_sigma", "sigma(w)", "relative (error of log sigma)", "1e-13 + 4 x input floor");
+  for (double alpha : log_spaced(1e-3, 10, 8 * density))
+    for (int i = 1; i < 16 * density; ++i) {
+      const double theta = std::numbers::pi * i / (16 * density);
+      const SlopeCase k{0, 0, alpha * alpha / 2, alpha * alpha / 2, 0, theta, 0};
+      const mp::VisibleSlope r = mp::visible_slope(k.mean_x, k.mean_y, k.var_x, k.var_y, k.c_xy, k.theta, k.phi);
+      if (r.log_N < -708) continue;  // sigma is below the smallest normal double
+      const double s = kernels::f64::ndf_beckmann_sigma({std::sin(theta), 0, std::cos(theta)}, glm::dvec2(alpha));
+      const SlopeMoments rd{double(r.log_N), 0, 0, k.var_x, k.var_y, 0};
+      char at[64];
+      std::snprintf(at, sizeof at, "alpha = %.3g, theta = %.4g", alpha, theta);
+      sigma.add(static_cast<double>(abs(log(mp::Real(s)) - r.log_N)), 1e-13, 4 * input_floor(k, rd, 0x1p-53).log_N, at);
+    }
+  return {sigma.row()};
+}
 
 // The case with horizon variable t (before the inputs are rounded), given the other parameters: the mean
 // is placed along omega's azimuth so that (cot theta - mean_o)/sigma_o = t, mean_perp as given.

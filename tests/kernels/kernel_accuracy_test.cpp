@@ -90,6 +90,8 @@ TEST(KernelAccuracy, SmithMasking) { expect_within_bounds(accuracy::masking_rows
 
 TEST(KernelAccuracy, VisibleHeights) { expect_within_bounds(accuracy::visible_height_rows(1)); }
 
+TEST(KernelAccuracy, BeckmannCrossSection) { expect_within_bounds(accuracy::beckmann_sigma_rows(1)); }
+
 TEST(KernelAccuracy, VisibleSlopeIssue21Sweep) { expect_within_bounds(accuracy::visible_slope_issue_rows(1)); }
 
 TEST(KernelAccuracy, VisibleSlopeWholeDomain) { expect_within_bounds(accuracy::visible_slope_domain_rows(1)); }
