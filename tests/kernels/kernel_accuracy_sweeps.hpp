@@ -14,6 +14,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernels/shared.hpp"
@@ -94,7 +95,7 @@ inline std::vector<Row> special_function_rows(int density) {
       erf("sf_erf", "erf(x)", "relative", tight), ratio("sf_phi_over_Phi", "phi(t)/Phi(t)", "relative", tight),
       log_cdf("sf_log_normal_cdf", "log Phi(t)", "relative", "16 eps = 3.6e-15"),
       quantile("sf_normal_quantile_upper_log", "x with log Q(x) = log q", "error of x / max(1, x)", tight);
-  std::vector<double> xs = log_spaced(1e-6, 1e6, 250 * density), negative = log_spaced(-26.5, -1e-6, 150 * density);
+  std::vector<double> xs = log_spaced(1e-6, 1e6, 160 * density), negative = log_spaced(-26.5, -1e-6, 100 * density);
   xs.insert(xs.end(), negative.begin(), negative.end());
   for (int i = 0; i < 25 * density; ++i) xs.push_back(1.9 + 0.2 * i / (25 * density));  // u = (x-2)/(x+2) = 0 at 2
   for (double x : xs) {
@@ -110,14 +111,14 @@ inline std::vector<Row> special_function_rows(int density) {
   for (double x : {-0.5, -0.4999999999, 0.4999999999, 0.5})  // erf's series / erfc switch
     erf.add(rel(sf_erf(x), mp::erf(mp::Real(x))), 1.8e-15, 0, format("x = %.10g", x));
   // Up to t = 37.5, where phi(t) is still a normal double.
-  std::vector<double> ts = log_spaced(-1e4, -1e-4, 150 * density), positive = log_spaced(1e-4, 37.5, 100 * density);
+  std::vector<double> ts = log_spaced(-1e4, -1e-4, 100 * density), positive = log_spaced(1e-4, 37.5, 60 * density);
   ts.insert(ts.end(), positive.begin(), positive.end());
   for (double t : ts) {
     ratio.add(rel(sf_phi_over_Phi(t), mp::normal_pdf(t) / mp::normal_tail(-mp::Real(t))), 1.8e-15, 0,
               format("t = %.6g", t));
     log_cdf.add(rel(sf_log_normal_cdf(t), mp::log_normal_cdf(t)), 3.6e-15, 0, format("t = %.6g", t));
   }
-  for (double log_q : log_spaced(-std::numbers::ln2, -1e6, 100 * density)) {
+  for (double log_q : log_spaced(-std::numbers::ln2, -1e6, 80 * density)) {
     // Residual of log Q at the returned x, turned into an error in x by d log Q/dx = -1/R(x), R = Q/phi.
     const double x = sf_normal_quantile_upper_log(log_q);
     const mp::Real Q = mp::normal_tail(mp::Real(x));
@@ -149,6 +150,10 @@ inline std::vector<Row> masking_rows(int density) {
 
 // --- Visible heights (gaussian_masking.glsl) for heights N(0, 1), so the kernel's own rounding is measured. ---
 
+// Heights with CDF C = Phi seen under Smith's height-correlated masking have density (1 + Lambda) C^Lambda c
+// (docs/masking.md), whose integral over (-inf, z] is C^(1 + Lambda) (checked against quadrature of the density in
+// ReferencesAgreeWithIndependentMethods); C comes from the erfc integral.
+
 // CDF = exp(x), x = (1 + Lambda) log Phi(z): a rounding of Lambda moves x by eps |x|, and log Phi's own error
 // (bounded by 16 eps = 3.6e-15 above) by 3.6e-15 |x|, which is the allowance (relative); the density likewise with
 // x = Lambda log Phi - z^2/2. sample(u) returns z with
@@ -161,17 +166,22 @@ inline std::vector<Row> visible_height_rows(int density) {
       pdf("visible_height_pdf", "(1 + Lambda) C^Lambda c", "relative", "1e-13 + (eps + 3.6e-15) abs(log pdf)"),
       sample("visible_height_sample", "z with CDF(z) = u", "error of z / max(1, abs(z))",
              "1e-13 + eps abs(log C) Phi/phi");
+  // z from the CDF's underflow to 1 - 1e-30; log Phi(z) is shared by every Lambda.
+  std::vector<std::pair<double, mp::Real>> log_Phi;
+  for (int i = 0; i < 40 * density; ++i) {
+    const double z = -37 + 49.0 * i / (40 * density - 1);
+    log_Phi.emplace_back(z, mp::log_normal_cdf(z));
+  }
   for (double lambda : {0.0, 1e-6, 0.7, 25.0, 1e3, 1e6, 1e8}) {
     const mp::Real L = lambda;
     char at[64];
-    for (int i = 0; i < 40 * density; ++i) {
-      const double z = -37 + 49.0 * i / (40 * density - 1);  // CDF and pdf from their underflow to 1 - 1e-30
-      const mp::Real log_cdf = mp::visible_height_log_cdf(z, L);
-      if (log_cdf < -700) continue;  // the kernel's CDF underflows there
+    for (const auto& [z, log_C] : log_Phi) {
+      const mp::Real log_cdf = (1 + L) * log_C;  // CDF = C^(1 + Lambda)
+      if (log_cdf < -700) continue;              // the kernel's CDF underflows there
       std::snprintf(at, sizeof at, "z = %.4g, Lambda = %.3g", z, lambda);
       cdf.add(rel(visible_height_cdf(z, 0, 1, lambda), exp(log_cdf)), 1e-13, kLogCdfAllowance * double(abs(log_cdf)),
               at);
-      const mp::Real log_pdf = L * mp::log_normal_cdf(z) - mp::Real(z) * z / 2;
+      const mp::Real log_pdf = L * log_C - mp::Real(z) * z / 2;
       const mp::Real ref_pdf = (1 + L) * exp(log_pdf) / mp::kSqrt2Pi;
       pdf.add(rel(visible_height_pdf(z, 0, 1, lambda), ref_pdf), 1e-13, kLogCdfAllowance * double(abs(log_pdf)), at);
     }

@@ -60,11 +60,6 @@ inline Real normal_pdf(const Real& x) { return exp(-x * x / 2) / kSqrt2Pi; }
 // For t > 0 as log(1 - Q(t)): 1 - Q rounds to 1 beyond t = 15 even in 50 digits.
 inline Real log_normal_cdf(const Real& t) { return t > 0 ? boost::math::log1p(-normal_tail(t)) : log(normal_tail(-t)); }
 
-// --- Visible heights (docs/masking.md): heights N(0, 1) with CDF C = Phi seen under Smith's height-correlated
-// masking have density (1 + Lambda) C^Lambda c, whose integral over (-inf, z] is C(z)^(1 + Lambda) (checked by
-// quadrature of the density in ReferencesAgreeWithIndependentMethods). ---
-inline Real visible_height_log_cdf(const Real& z, const Real& lambda) { return (1 + lambda) * log_normal_cdf(z); }
-
 // --- Smith masking: Lambda = (N - w0)/w0 with N = E[max(0, W)], w0 = E[W] = a t (eq. 16 of the visible
 // slope paper below), i.e. E[max(0, -W)]/(a t) = (1/t) int_0^inf u phi(t + u) du, t > 0. ---
 inline Real smith_lambda(const Real& t) {
