@@ -77,8 +77,8 @@ inline Errors input_floor(const SlopeCase& k, const SlopeMoments& r, double eps)
   const double sigma_o = std::sqrt(k.var_x * c * c + k.var_y * s * s + 2 * k.c_xy * c * s);
   const double a = std::sin(k.theta) * sigma_o;
   const double t = (std::cos(k.theta) - mean_o * std::sin(k.theta)) / a;
-  const double dt =
-      eps * ((std::cos(k.theta) + std::abs(mean_o) * std::sin(k.theta)) * (1 + k.theta) / a + 2 * std::abs(t));
+  const double dt = eps * ((std::abs(std::cos(k.theta)) + std::abs(mean_o) * std::sin(k.theta)) * (1 + k.theta) / a +
+                           2 * std::abs(t));  // |cos|: views below the horizon (cross-sections) too
   // The mean is a sum of terms of size |cot theta|, |s| and, through the regression of s_perp on
   // s_o, |mean of D_s| itself (which can exceed the others by orders of magnitude for strongly
   // correlated, thin laws beyond the horizon); a float result cannot be nearer than eps times that.
