@@ -11,12 +11,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "kernels/cross_section_exact.hpp"
 #include "kernels/shared.hpp"
 #include "support/multiprecision_reference.hpp"
 #include "visible_slope_cases.hpp"
@@ -258,6 +260,83 @@ inline std::vector<Row> beckmann_sigma_rows(int density) {
       sigma.add(static_cast<double>(abs(log(mp::Real(s)) - r.log_N)), 1e-13, 4 * input_floor(k, rd, 0x1p-53).log_N, at);
     }
   return {sigma.row()};
+}
+
+// --- Cross-sections sigma(u) of GGX, Kagiwada-Kalaba and the spherical Gaussian (docs/cross_sections.md) against
+// mp::isotropic_sigma, the integral over directions. ndf_sigma_u takes u itself, which the reference uses exactly:
+// no input floor. ---
+
+// u over [-1, 1]: uniform, and log-spaced towards the kernels' branch boundary u = 0 (both sides) and towards +-1.
+// A reference costs 5-20 ms (mp::isotropic_sigma), hence few points at density 1.
+inline std::vector<double> cross_section_us(int density) {
+  std::vector<double> us;
+  for (int i = 0; i <= 4 * density; ++i) us.push_back(-1 + 2.0 * i / (4 * density));
+  for (double d : log_spaced(1e-8, 1e-2, density))
+    for (double u : {-d, d, -1 + d, 1 - d}) us.push_back(u);
+  return us;
+}
+
+// Relative error; where sigma = 0 exactly (GGX at u = -1) the kernel must return 0.
+inline double rel_or_zero(double value, const mp::Real& reference) {
+  if (reference == 0) return value == 0 ? 0 : std::numeric_limits<double>::infinity();
+  return rel(value, reference);
+}
+
+inline std::string at_u(const char* name, double param, double u) {
+  char at[80];
+  std::snprintf(at, sizeof at, "%s = %.9g, u = %.6g", name, param, u);
+  return at;
+}
+
+// GGX, alpha from 1e-3 to 1e3; the kernel's branch is u >= 0 / u < 0.
+inline std::vector<Row> ggx_sigma_rows(int density) {
+  Worst sigma("ndf_ggx_sigma", "sigma(u)", "relative", "8 eps = 1.8e-15");
+  const std::vector<double> us = cross_section_us(density);
+  for (double alpha : log_spaced(1e-3, 1e3, 2 * density + 1))
+    for (double u : us) {
+      const double d = kernels::f64::ndf_sigma_u(NDF_GGX, u, alpha);
+      sigma.add(rel_or_zero(d, mp::ggx_sigma(alpha, u)), 1.8e-15, 0, at_u("alpha", alpha, u));
+    }
+  return {sigma.row()};
+}
+
+// Kagiwada-Kalaba over the kernel's clamped range b in [1e-6, 1 - 1e-6], log-spaced towards both ends. The bound is
+// looser where R^2 = 1 - b^2 (1 - u^2) cancels (b -> 1, u -> 0: R ~ sqrt(2 (1 - b))), which the kernel computes as
+// written: R is then off by ~eps/(2 R), and sigma (through b s^2/(1 + R)) by as much relative; allowance 2 eps/R.
+inline std::vector<Row> kk_sigma_rows(int density) {
+  Worst sigma("ndf_kk_sigma", "sigma(u)", "relative", "8 eps + 2 eps/sqrt(2 (1 - b))");
+  std::vector<double> bs = log_spaced(1e-6, 0.5, density + 1);
+  for (double q : log_spaced(1e-6, 0.3, density)) bs.push_back(1 - q);
+  const std::vector<double> us = cross_section_us(density);
+  for (double b : bs)
+    for (double u : us) {
+      const double d = kernels::f64::ndf_sigma_u(NDF_KK, u, b);
+      sigma.add(rel(d, mp::kk_sigma(b, u)), 1.8e-15, 0x1p-52 / std::sqrt(2 * (1 - b)), at_u("b", b, u));
+    }
+  return {sigma.row()};
+}
+
+// Spherical Gaussian, alpha from 1e-3 to 1e3 and across the fast kernel's switch kappa = 200 (alpha = 0.1): the
+// exact CPU quadrature sg_cross_section_exact (relative, with an absolute allowance 1e-16 where sigma is tiny: its
+// stated accuracy is absolute) and the fast kernel ndf_sg_sigma_u (absolute; docs/cross_sections.md states 1.76e-5
+// on its own grid, this sweep finds 2e-5 at the switch). Points where sigma is below the smallest normal double are
+// left out.
+inline std::vector<Row> sg_sigma_rows(int density) {
+  Worst exact("sg_cross_section_exact", "sigma(u)", "relative", "1e-13 + 1e-16/sigma"),
+      fast("ndf_sg_sigma (Legendre / cumulant)", "sigma(u)", "absolute", "2.5e-5");
+  std::vector<double> alphas = log_spaced(1e-3, 1e3, 2 * density + 1);
+  const double switch_alpha = std::sqrt(2 / 200.0);
+  for (double f : {1 - 1e-9, 1 + 1e-9}) alphas.push_back(switch_alpha * f);
+  const std::vector<double> us = cross_section_us(density);
+  for (double alpha : alphas)
+    for (double u : us) {
+      const mp::Real ref = mp::sg_sigma(alpha, u);
+      if (ref < 1e-300) continue;
+      const std::string at = at_u("alpha", alpha, u);
+      exact.add(rel(kernels::sg_cross_section_exact(alpha, u), ref), 1e-13, 1e-16 / double(ref), at);
+      fast.add(double(abs(mp::Real(kernels::f64::ndf_sigma_u(NDF_SG, u, alpha)) - ref)), 2.5e-5, 0, at);
+    }
+  return {exact.row(), fast.row()};
 }
 
 // The case with horizon variable t (before the inputs are rounded), given the other parameters: the mean
