@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "common/error.hpp"
+#include "diffraction/spectral_tables.hpp"
 #include "kernels/cross_section_exact.hpp"
 #include "kernels/shared.hpp"
 #include "support/multiprecision_reference.hpp"
@@ -337,6 +339,44 @@ inline std::vector<Row> sg_sigma_rows(int density) {
       fast.add(double(abs(mp::Real(kernels::f64::ndf_sigma_u(NDF_SG, u, alpha)) - ref)), 2.5e-5, 0, at);
     }
   return {exact.row(), fast.row()};
+}
+
+// --- Diffraction: the Taylor term count (renderer/diffraction/spectral_tables.cpp). ---
+
+// taylor_term_count(x_max, tol) is the smallest N with x_max^N/N! <= tol, the Lagrange bound of the truncated series
+// of e^{ix}. Checked against the definition of the error it bounds, |e^{ix} - sum_{n<N} (ix)^n/n!|, in 50 digits
+// (cos, sin and the partial sum, whose cancellation costs log10 e^x < 10 of the 50 digits), at x = x_max j/8,
+// j = 1..8 (the series serves every |x| <= x_max). x_max over [1e-3, 24], tolerances over [1e-15, 0.1]; pairs that
+// would need more than the tables' cap of Taylor terms throw and are left out.
+inline std::vector<Row> taylor_rows(int density) {
+  const std::string quantity = "abs(e^{ix} - sum_{n<N} (ix)^n/n!), abs(x) <= x_max";
+  Worst error("taylor_term_count", quantity, "error / tolerance", "1"),
+      lagrange("taylor_term_count", quantity, "error / (x_max^N/N!)", "1 (the Lagrange bound)");
+  for (double tol : log_spaced(1e-15, 0.1, 8 * density))
+    for (double x_max : log_spaced(1e-3, 24, 40 * density)) {
+      int N = 0;
+      try {
+        N = diffraction::taylor_term_count(x_max, tol);
+      } catch (const Error&) {
+        continue;
+      }
+      mp::Real bound = 1;
+      for (int n = 1; n <= N; ++n) bound *= mp::Real(x_max) / n;
+      char at[80];
+      std::snprintf(at, sizeof at, "x_max = %.4g, tol = %.3g, N = %d", x_max, tol, N);
+      for (int j = 1; j <= 8; ++j) {
+        const mp::Real x = mp::Real(x_max) * j / 8;
+        mp::Real sum[2] = {0, 0}, term = 1;  // real, imaginary parts; term = x^n/n!
+        for (int n = 0; n < N; ++n) {
+          sum[n % 2] += n % 4 < 2 ? term : -term;  // i^n = 1, i, -1, -i
+          term *= x / (n + 1);
+        }
+        const mp::Real e = hypot(cos(x) - sum[0], sin(x) - sum[1]);
+        error.add(static_cast<double>(e / tol), 1, 0, at);
+        lagrange.add(static_cast<double>(e / bound), 1, 0, at);
+      }
+    }
+  return {error.row(), lagrange.row()};
 }
 
 // The case with horizon variable t (before the inputs are rounded), given the other parameters: the mean

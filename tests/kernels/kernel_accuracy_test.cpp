@@ -107,6 +107,8 @@ TEST(KernelAccuracy, KagiwadaKalabaCrossSection) { expect_within_bounds(accuracy
 
 TEST(KernelAccuracy, SphericalGaussianCrossSection) { expect_within_bounds(accuracy::sg_sigma_rows(1)); }
 
+TEST(KernelAccuracy, DiffractionTaylorTermCount) { expect_within_bounds(accuracy::taylor_rows(1)); }
+
 TEST(KernelAccuracy, VisibleSlopeIssue21Sweep) { expect_within_bounds(accuracy::visible_slope_issue_rows(1)); }
 
 TEST(KernelAccuracy, VisibleSlopeWholeDomain) { expect_within_bounds(accuracy::visible_slope_domain_rows(1)); }
