@@ -307,7 +307,7 @@ inline std::vector<Row> ggx_sigma_rows(int density) {
 // written: R is then off by ~eps/(2 R), and sigma (through b s^2/(1 + R)) by as much relative; allowance 2 eps/R.
 inline std::vector<Row> kk_sigma_rows(int density) {
   Worst sigma("ndf_kk_sigma", "sigma(u)", "relative", "8 eps + 2 eps/sqrt(2 (1 - b))");
-  std::vector<double> bs = log_spaced(1e-6, 0.5, density + 1);
+  std::vector<double> bs = log_spaced(1e-6, 0.5, density);
   for (double q : log_spaced(1e-6, 0.3, density)) bs.push_back(1 - q);
   const std::vector<double> us = cross_section_us(density);
   for (double b : bs)
@@ -326,7 +326,7 @@ inline std::vector<Row> kk_sigma_rows(int density) {
 inline std::vector<Row> sg_sigma_rows(int density) {
   Worst exact("sg_cross_section_exact", "sigma(u)", "relative", "1e-13 + 1e-16/sigma"),
       fast("ndf_sg_sigma (Legendre / cumulant)", "sigma(u)", "absolute", "2.5e-5");
-  std::vector<double> alphas = log_spaced(1e-3, 1e3, 2 * density + 1);
+  std::vector<double> alphas = log_spaced(1e-3, 1e3, 2 * density);
   const double switch_alpha = std::sqrt(2 / 200.0);
   for (double f : {1 - 1e-9, 1 + 1e-9}) alphas.push_back(switch_alpha * f);
   const std::vector<double> us = cross_section_us(density);
