@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "diffraction/chebyshev_transform.hpp"
 #include "diffraction/spectral_tables.hpp"
 #include "kernels/cross_section_exact.hpp"
 #include "kernels/shared.hpp"
@@ -377,6 +378,64 @@ inline std::vector<Row> taylor_rows(int density) {
       }
     }
   return {error.row(), lagrange.row()};
+}
+
+// --- Diffraction: the exact transform's Chebyshev interpolation (renderer/diffraction/chebyshev_transform.cpp). ---
+
+// ChebyshevTransform interpolates, in x over [-x_max, 0], every band bin of p_j(x) = (1/M^2) sum_s exp(i x h(s))
+// exp(+i 2 pi j.s/M), h = (height - mean)/h_s; here p_j is that sum in 50 digits. A tall sinusoid on a 16 x 16 patch
+// (x_max = 10.5: three pieces), x uniform over the range and either side of every piece boundary. Error: the
+// largest |interpolant - p_j| over the band; bound: the interpolant's proven remainder (error_bound()) + 1e-13 for the
+// rounding of its node values (tests/diffraction/chebyshev_transform_test.cpp).
+inline std::vector<Row> chebyshev_transform_rows(int density) {
+  const auto grating = diffraction::grating_from_json(
+      nlohmann::json::parse(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":300,"size_um":4,"samples":16})"),
+      "kernel_accuracy");
+  const auto tables =
+      diffraction::build_spectral_tables(grating, {.lambda_min_nm = 360, .tolerance = 1e-3, .terms = 1});
+  const diffraction::ChebyshevTransform cheb(grating, tables);
+  const double bound = cheb.error_bound() + 1e-13;
+  Worst error("ChebyshevTransform", "band bins p_j(x), x in [-x_max, 0]", "max over bins of abs error",
+              format("error_bound() + 1e-13 = %.2g", bound));
+  const int M = grating.samples, J = tables.J;
+  std::vector<mp::Real> h(M * M), c(M), s(M);  // normalised heights; cos, sin of 2 pi k/M
+  for (int i = 0; i < M * M; ++i) h[i] = (mp::Real(grating.height_nm[i]) - tables.mean_nm) / tables.hs_nm;
+  for (int k = 0; k < M; ++k) {
+    c[k] = cos(2 * mp::kPi * k / M);
+    s[k] = sin(2 * mp::kPi * k / M);
+  }
+  const double x_max = cheb.x_max();
+  // A reference costs ~30 ms an x: 3 uniform points in the test, 300 in the report; every piece boundary +- 1e-9.
+  const int n = density > 1 ? 75 * density : 3;
+  std::vector<double> xs;
+  for (int i = 0; i < n; ++i) xs.push_back(-x_max * i / (n - 1));
+  const int pieces = static_cast<int>(std::ceil(x_max / diffraction::ChebyshevTransform::kMaxPiece));
+  for (int k = 1; k < pieces; ++k)
+    for (double d : {-1e-9, 1e-9}) xs.push_back(-x_max * k / pieces + d);
+  for (double x : xs) {
+    std::vector<mp::Real> re(M * M), im(M * M);
+    for (int i = 0; i < M * M; ++i) {
+      re[i] = cos(x * h[i]);
+      im[i] = sin(x * h[i]);
+    }
+    const diffraction::ChebyshevTransform::AtX at = cheb.at(x);
+    double worst = 0;
+    for (int jy = -J; jy <= J; ++jy)
+      for (int jx = -J; jx <= J; ++jx) {
+        mp::Real sum_re = 0, sum_im = 0;
+        for (int y = 0; y < M; ++y)
+          for (int sx = 0; sx < M; ++sx) {
+            const int k = ((jx * sx + jy * y) % M + M) % M;  // exp(+i 2 pi j.s/M) = c[k] + i s[k]
+            const int i = y * M + sx;
+            sum_re += re[i] * c[k] - im[i] * s[k];
+            sum_im += re[i] * s[k] + im[i] * c[k];
+          }
+        const std::complex<double> v = at.bin(jx, jy);
+        worst = std::max(worst, static_cast<double>(hypot(v.real() - sum_re / (M * M), v.imag() - sum_im / (M * M))));
+      }
+    error.add(worst, bound, 0, format("x = %.10g", x));
+  }
+  return {error.row()};
 }
 
 // The case with horizon variable t (before the inputs are rounded), given the other parameters: the mean

@@ -109,6 +109,8 @@ TEST(KernelAccuracy, SphericalGaussianCrossSection) { expect_within_bounds(accur
 
 TEST(KernelAccuracy, DiffractionTaylorTermCount) { expect_within_bounds(accuracy::taylor_rows(1)); }
 
+TEST(KernelAccuracy, DiffractionChebyshevTransform) { expect_within_bounds(accuracy::chebyshev_transform_rows(1)); }
+
 TEST(KernelAccuracy, VisibleSlopeIssue21Sweep) { expect_within_bounds(accuracy::visible_slope_issue_rows(1)); }
 
 TEST(KernelAccuracy, VisibleSlopeWholeDomain) { expect_within_bounds(accuracy::visible_slope_domain_rows(1)); }
