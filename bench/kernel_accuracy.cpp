@@ -1,7 +1,7 @@
 // Writes docs/kernel_accuracy.md: the worst error of each double kernel over the sweeps of
 // tests/kernels/kernel_accuracy_sweeps.hpp (the ones kernel_accuracy_test checks, here 4x denser) against
 // the 50-digit references of tests/support/multiprecision_reference.hpp.
-//   build/bench/kernel_accuracy docs/kernel_accuracy.md      (~10 s; built with -DFACET_BUILD_BENCHMARKS=ON)
+//   build/bench/kernel_accuracy docs/kernel_accuracy.md      (~40 s; built with -DFACET_BUILD_BENCHMARKS=ON)
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -36,6 +36,20 @@ Smith Λ is a function of t alone; its allowance ε t² is the change of Λ unde
 height CDF and density are exp(x) with x = (1 + Λ) log Φ(z) (resp. Λ log Φ − z²/2): their allowance is the move of x
 under a rounding of Λ plus log Φ's own bound, (ε + 3.6e-15)|x|; the CDF's reference C^{1+Λ} is checked against
 quadrature of the density it integrates.
+Cross-sections σ(u) = ∫ D(m) max(0, m·ω) dm (per steradian, docs/cross_sections.md): Beckmann by its slope-space
+form (the N of the visible slopes for a centred law); GGX, Kagiwada–Kalaba and the spherical Gaussian by the integral
+over directions in spherical coordinates about z, the azimuthal integral of the clipped cosine taken in closed form
+and the polar one by graded Gauss–Legendre (`mp::isotropic_sigma`, checked against a 40-point rule). u is passed to
+`ndf_sigma_u` exactly, so there is no input floor; the KK allowance is the kernel's own cancellation in
+R² = 1 − b²(1 − u²) as b → 1. `sg_cross_section_exact` is the CPU quadrature (stated accuracy absolute, hence the
+1e-16/σ allowance), `ndf_sg_sigma` the fast GPU kernel (an approximation, bound absolute).
+Diffraction: `taylor_term_count(x_max, tol)` picks the smallest N with x_max^N/N! ≤ tol (the Lagrange bound); the
+quantity checked is the definition of what it bounds, |e^{ix} − Σ_{n<N} (ix)^n/n!| for |x| ≤ x_max, in 50 digits,
+as a fraction of the tolerance (must be ≤ 1) and of the Lagrange bound (how loose the choice is). Both ratios are
+below 1 everywhere; they print as 1 at small x, where the first omitted term is nearly all of the remainder.
+`ChebyshevTransform` (the exact transform's interpolation in x = k w h_s) against its definition, every band bin of
+p_j(x) = (1/M²) Σ_s exp(i x h(s)) exp(+2πi j·s/M) summed in 50 digits, for a tall sinusoid on a 16 × 16 patch;
+bound: its proven remainder plus 1e-13 for the rounding of its node values.
 
 )";
 
@@ -79,7 +93,8 @@ int main(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<Row> rows;
   for (auto sweep : {acc::special_function_rows, acc::masking_rows, acc::visible_height_rows, acc::beckmann_sigma_rows,
-                     acc::visible_slope_issue_rows, acc::visible_slope_domain_rows})
+                     acc::ggx_sigma_rows, acc::kk_sigma_rows, acc::sg_sigma_rows, acc::taylor_rows,
+                     acc::chebyshev_transform_rows, acc::visible_slope_issue_rows, acc::visible_slope_domain_rows})
     for (const Row& r : sweep(kDensity)) rows.push_back(r);
   for (const Row& r : acc::visible_slope_extreme_rows()) rows.push_back(r);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

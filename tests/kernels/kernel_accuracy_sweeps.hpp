@@ -10,13 +10,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "common/error.hpp"
+#include "diffraction/chebyshev_transform.hpp"
+#include "diffraction/spectral_tables.hpp"
+#include "kernels/cross_section_exact.hpp"
 #include "kernels/shared.hpp"
 #include "support/multiprecision_reference.hpp"
 #include "visible_slope_cases.hpp"
@@ -258,6 +266,179 @@ inline std::vector<Row> beckmann_sigma_rows(int density) {
       sigma.add(static_cast<double>(abs(log(mp::Real(s)) - r.log_N)), 1e-13, 4 * input_floor(k, rd, 0x1p-53).log_N, at);
     }
   return {sigma.row()};
+}
+
+// --- Cross-sections sigma(u) of GGX, Kagiwada-Kalaba and the spherical Gaussian (docs/cross_sections.md) against
+// mp::isotropic_sigma, the integral over directions. ndf_sigma_u takes u itself, which the reference uses exactly:
+// no input floor. ---
+
+// u over [-1, 1]: uniform, and log-spaced towards the kernels' branch boundary u = 0 (both sides) and towards +-1.
+// A reference costs 5-20 ms (mp::isotropic_sigma), hence few points at density 1.
+inline std::vector<double> cross_section_us(int density) {
+  std::vector<double> us;
+  for (int i = 0; i <= 4 * density; ++i) us.push_back(-1 + 2.0 * i / (4 * density));
+  for (double d : log_spaced(1e-8, 1e-2, density))
+    for (double u : {-d, d, -1 + d, 1 - d}) us.push_back(u);
+  return us;
+}
+
+// Relative error; where sigma = 0 exactly (GGX at u = -1) the kernel must return 0.
+inline double rel_or_zero(double value, const mp::Real& reference) {
+  if (reference == 0) return value == 0 ? 0 : std::numeric_limits<double>::infinity();
+  return rel(value, reference);
+}
+
+inline std::string at_u(const char* name, double param, double u) {
+  char at[80];
+  std::snprintf(at, sizeof at, "%s = %.9g, u = %.6g", name, param, u);
+  return at;
+}
+
+// GGX, alpha from 1e-3 to 1e3; the kernel's branch is u >= 0 / u < 0.
+inline std::vector<Row> ggx_sigma_rows(int density) {
+  Worst sigma("ndf_ggx_sigma", "sigma(u)", "relative", "8 eps = 1.8e-15");
+  const std::vector<double> us = cross_section_us(density);
+  for (double alpha : log_spaced(1e-3, 1e3, 2 * density + 1))
+    for (double u : us) {
+      const double d = kernels::f64::ndf_sigma_u(NDF_GGX, u, alpha);
+      sigma.add(rel_or_zero(d, mp::ggx_sigma(alpha, u)), 1.8e-15, 0, at_u("alpha", alpha, u));
+    }
+  return {sigma.row()};
+}
+
+// Kagiwada-Kalaba over the kernel's clamped range b in [1e-6, 1 - 1e-6], log-spaced towards both ends. The bound is
+// looser where R^2 = 1 - b^2 (1 - u^2) cancels (b -> 1, u -> 0: R ~ sqrt(2 (1 - b))), which the kernel computes as
+// written: R is then off by ~eps/(2 R), and sigma (through b s^2/(1 + R)) by as much relative; allowance 2 eps/R.
+inline std::vector<Row> kk_sigma_rows(int density) {
+  Worst sigma("ndf_kk_sigma", "sigma(u)", "relative", "8 eps + 2 eps/sqrt(2 (1 - b))");
+  std::vector<double> bs = log_spaced(1e-6, 0.5, density);
+  for (double q : log_spaced(1e-6, 0.3, density)) bs.push_back(1 - q);
+  const std::vector<double> us = cross_section_us(density);
+  for (double b : bs)
+    for (double u : us) {
+      const double d = kernels::f64::ndf_sigma_u(NDF_KK, u, b);
+      sigma.add(rel(d, mp::kk_sigma(b, u)), 1.8e-15, 0x1p-52 / std::sqrt(2 * (1 - b)), at_u("b", b, u));
+    }
+  return {sigma.row()};
+}
+
+// Spherical Gaussian, alpha from 1e-3 to 1e3 and across the fast kernel's switch kappa = 200 (alpha = 0.1): the
+// exact CPU quadrature sg_cross_section_exact (relative, with an absolute allowance 1e-16 where sigma is tiny: its
+// stated accuracy is absolute) and the fast kernel ndf_sg_sigma_u (absolute; docs/cross_sections.md states 1.76e-5
+// on its own grid, this sweep finds 2e-5 at the switch). Points where sigma is below the smallest normal double are
+// left out.
+inline std::vector<Row> sg_sigma_rows(int density) {
+  Worst exact("sg_cross_section_exact", "sigma(u)", "relative", "1e-13 + 1e-16/sigma"),
+      fast("ndf_sg_sigma (Legendre / cumulant)", "sigma(u)", "absolute", "2.5e-5");
+  std::vector<double> alphas = log_spaced(1e-3, 1e3, 2 * density);
+  const double switch_alpha = std::sqrt(2 / 200.0);
+  for (double f : {1 - 1e-9, 1 + 1e-9}) alphas.push_back(switch_alpha * f);
+  const std::vector<double> us = cross_section_us(density);
+  for (double alpha : alphas)
+    for (double u : us) {
+      const mp::Real ref = mp::sg_sigma(alpha, u);
+      if (ref < 1e-300) continue;
+      const std::string at = at_u("alpha", alpha, u);
+      exact.add(rel(kernels::sg_cross_section_exact(alpha, u), ref), 1e-13, 1e-16 / double(ref), at);
+      fast.add(double(abs(mp::Real(kernels::f64::ndf_sigma_u(NDF_SG, u, alpha)) - ref)), 2.5e-5, 0, at);
+    }
+  return {exact.row(), fast.row()};
+}
+
+// --- Diffraction: the Taylor term count (renderer/diffraction/spectral_tables.cpp). ---
+
+// taylor_term_count(x_max, tol) is the smallest N with x_max^N/N! <= tol, the Lagrange bound of the truncated series
+// of e^{ix}. Checked against the definition of the error it bounds, |e^{ix} - sum_{n<N} (ix)^n/n!|, in 50 digits
+// (cos, sin and the partial sum, whose cancellation costs log10 e^x < 10 of the 50 digits), at x = x_max j/8,
+// j = 1..8 (the series serves every |x| <= x_max). x_max over [1e-3, 24], tolerances over [1e-15, 0.1]; pairs that
+// would need more than the tables' cap of Taylor terms throw and are left out.
+inline std::vector<Row> taylor_rows(int density) {
+  const std::string quantity = "abs(e^{ix} - sum_{n<N} (ix)^n/n!), abs(x) <= x_max";
+  Worst error("taylor_term_count", quantity, "error / tolerance", "1"),
+      lagrange("taylor_term_count", quantity, "error / (x_max^N/N!)", "1 (the Lagrange bound)");
+  for (double tol : log_spaced(1e-15, 0.1, 8 * density))
+    for (double x_max : log_spaced(1e-3, 24, 40 * density)) {
+      int N = 0;
+      try {
+        N = diffraction::taylor_term_count(x_max, tol);
+      } catch (const Error&) {
+        continue;
+      }
+      mp::Real bound = 1;
+      for (int n = 1; n <= N; ++n) bound *= mp::Real(x_max) / n;
+      char at[80];
+      std::snprintf(at, sizeof at, "x_max = %.4g, tol = %.3g, N = %d", x_max, tol, N);
+      for (int j = 1; j <= 8; ++j) {
+        const mp::Real x = mp::Real(x_max) * j / 8;
+        mp::Real sum[2] = {0, 0}, term = 1;  // real, imaginary parts; term = x^n/n!
+        for (int n = 0; n < N; ++n) {
+          sum[n % 2] += n % 4 < 2 ? term : -term;  // i^n = 1, i, -1, -i
+          term *= x / (n + 1);
+        }
+        const mp::Real e = hypot(cos(x) - sum[0], sin(x) - sum[1]);
+        error.add(static_cast<double>(e / tol), 1, 0, at);
+        lagrange.add(static_cast<double>(e / bound), 1, 0, at);
+      }
+    }
+  return {error.row(), lagrange.row()};
+}
+
+// --- Diffraction: the exact transform's Chebyshev interpolation (renderer/diffraction/chebyshev_transform.cpp). ---
+
+// ChebyshevTransform interpolates, in x over [-x_max, 0], every band bin of p_j(x) = (1/M^2) sum_s exp(i x h(s))
+// exp(+i 2 pi j.s/M), h = (height - mean)/h_s; here p_j is that sum in 50 digits. A tall sinusoid on a 16 x 16 patch
+// (x_max = 10.5: three pieces), x uniform over the range and either side of every piece boundary. Error: the
+// largest |interpolant - p_j| over the band; bound: the interpolant's proven remainder (error_bound()) + 1e-13 for the
+// rounding of its node values (tests/diffraction/chebyshev_transform_test.cpp).
+inline std::vector<Row> chebyshev_transform_rows(int density) {
+  const auto grating = diffraction::grating_from_json(
+      nlohmann::json::parse(R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":300,"size_um":4,"samples":16})"),
+      "kernel_accuracy");
+  const auto tables =
+      diffraction::build_spectral_tables(grating, {.lambda_min_nm = 360, .tolerance = 1e-3, .terms = 1});
+  const diffraction::ChebyshevTransform cheb(grating, tables);
+  const double bound = cheb.error_bound() + 1e-13;
+  Worst error("ChebyshevTransform", "band bins p_j(x), x in [-x_max, 0]", "max over bins of abs error",
+              format("error_bound() + 1e-13 = %.2g", bound));
+  const int M = grating.samples, J = tables.J;
+  std::vector<mp::Real> h(M * M), c(M), s(M);  // normalised heights; cos, sin of 2 pi k/M
+  for (int i = 0; i < M * M; ++i) h[i] = (mp::Real(grating.height_nm[i]) - tables.mean_nm) / tables.hs_nm;
+  for (int k = 0; k < M; ++k) {
+    c[k] = cos(2 * mp::kPi * k / M);
+    s[k] = sin(2 * mp::kPi * k / M);
+  }
+  const double x_max = cheb.x_max();
+  // A reference costs ~30 ms an x: 3 uniform points in the test, 300 in the report; every piece boundary +- 1e-9.
+  const int n = density > 1 ? 75 * density : 3;
+  std::vector<double> xs;
+  for (int i = 0; i < n; ++i) xs.push_back(-x_max * i / (n - 1));
+  const int pieces = static_cast<int>(std::ceil(x_max / diffraction::ChebyshevTransform::kMaxPiece));
+  for (int k = 1; k < pieces; ++k)
+    for (double d : {-1e-9, 1e-9}) xs.push_back(-x_max * k / pieces + d);
+  for (double x : xs) {
+    std::vector<mp::Real> re(M * M), im(M * M);
+    for (int i = 0; i < M * M; ++i) {
+      re[i] = cos(x * h[i]);
+      im[i] = sin(x * h[i]);
+    }
+    const diffraction::ChebyshevTransform::AtX at = cheb.at(x);
+    double worst = 0;
+    for (int jy = -J; jy <= J; ++jy)
+      for (int jx = -J; jx <= J; ++jx) {
+        mp::Real sum_re = 0, sum_im = 0;
+        for (int y = 0; y < M; ++y)
+          for (int sx = 0; sx < M; ++sx) {
+            const int k = ((jx * sx + jy * y) % M + M) % M;  // exp(+i 2 pi j.s/M) = c[k] + i s[k]
+            const int i = y * M + sx;
+            sum_re += re[i] * c[k] - im[i] * s[k];
+            sum_im += re[i] * s[k] + im[i] * c[k];
+          }
+        const std::complex<double> v = at.bin(jx, jy);
+        worst = std::max(worst, static_cast<double>(hypot(v.real() - sum_re / (M * M), v.imag() - sum_im / (M * M))));
+      }
+    error.add(worst, bound, 0, format("x = %.10g", x));
+  }
+  return {error.row()};
 }
 
 // The case with horizon variable t (before the inputs are rounded), given the other parameters: the mean

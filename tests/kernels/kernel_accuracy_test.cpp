@@ -65,6 +65,15 @@ TEST(KernelAccuracy, ReferencesAgreeWithIndependentMethods) {
   EXPECT_LT(height, 1e-22);
   EXPECT_LT(worst_erfc, 1e-22);
 
+  // Cross-sections: the 20-point rule per piece against 40 points, across the kinks near the peak (u = 1e-5) and below
+  // the horizon (where SG's sigma is 1e-20); one case each (a 40-point value costs up to 40 ms).
+  auto r = [](const mp::Real& a, const mp::Real& b) { return static_cast<double>(abs(a / b - 1)); };
+  const double worst_sigma = std::max({r(mp::ggx_sigma(0.01, 1e-5), mp::ggx_sigma<40>(0.01, 1e-5)),
+                                       r(mp::kk_sigma(1 - 1e-6, -0.3), mp::kk_sigma<40>(1 - 1e-6, -0.3)),
+                                       r(mp::sg_sigma(0.05, -0.3), mp::sg_sigma<40>(0.05, -0.3))});
+  std::printf("cross-sections, 20- vs 40-point rule: %.2g\n", worst_sigma);
+  EXPECT_LT(worst_sigma, 1e-19);
+
   double worst_slope = 0;
   const std::vector<SlopeCase> cases = quadrature_cases();
   for (std::size_t i = 0; i < cases.size(); i += 2) {  // every second case: the double rule is slow under ASan
@@ -91,6 +100,16 @@ TEST(KernelAccuracy, SmithMasking) { expect_within_bounds(accuracy::masking_rows
 TEST(KernelAccuracy, VisibleHeights) { expect_within_bounds(accuracy::visible_height_rows(1)); }
 
 TEST(KernelAccuracy, BeckmannCrossSection) { expect_within_bounds(accuracy::beckmann_sigma_rows(1)); }
+
+TEST(KernelAccuracy, GgxCrossSection) { expect_within_bounds(accuracy::ggx_sigma_rows(1)); }
+
+TEST(KernelAccuracy, KagiwadaKalabaCrossSection) { expect_within_bounds(accuracy::kk_sigma_rows(1)); }
+
+TEST(KernelAccuracy, SphericalGaussianCrossSection) { expect_within_bounds(accuracy::sg_sigma_rows(1)); }
+
+TEST(KernelAccuracy, DiffractionTaylorTermCount) { expect_within_bounds(accuracy::taylor_rows(1)); }
+
+TEST(KernelAccuracy, DiffractionChebyshevTransform) { expect_within_bounds(accuracy::chebyshev_transform_rows(1)); }
 
 TEST(KernelAccuracy, VisibleSlopeIssue21Sweep) { expect_within_bounds(accuracy::visible_slope_issue_rows(1)); }
 
