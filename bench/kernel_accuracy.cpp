@@ -22,7 +22,7 @@ Each kernel of `shaders/lib` compiled as double (`facet::kernels::f64`) is compa
 `cpp_bin_float<50>` (tests/support/multiprecision_reference.hpp; its rule is checked against adaptive exp_sinh and
 Boost.Math's own 50-digit erf, `KernelAccuracy.ReferencesAgreeWithIndependentMethods`). The sweeps
 (tests/kernels/kernel_accuracy_sweeps.hpp) are log-spaced over each parameter's whole range and dense across every
-branch boundary; `kernel_accuracy_test` runs the same sweeps at a quarter of the density below and fails when an error
+branch boundary; `kernel_accuracy_test` runs the same sweeps, thinner (a quarter of the density, fewer roughnesses for the cross-sections and points for the Chebyshev interpolant; counts in the sweeps file), and fails when an error
 exceeds its bound.
 
 Visible slopes: errors as in docs/visible_slope.md (N by |Δ log N|, the mean by √tr Σ_s, the covariance by tr Σ_s).
