@@ -17,12 +17,20 @@ int parse_samples_per_axis(const std::string& count) {
   return !count.empty() && *end == '\0' && k >= 1 && k <= kMaxSamplesPerAxis ? static_cast<int>(k) : 0;
 }
 
-// The footprint methods by name; each may also run per stratum of ss:K ("filtered:ss:4").
+// The footprint methods and their names, read by parse() and written by name(); each may also run per
+// stratum of ss:K ("filtered:ss:4").
+struct FootprintMethodName {
+  RenderMethod::Texture texture;
+  const char* name;
+};
+constexpr FootprintMethodName kFootprintMethods[] = {{RenderMethod::Texture::Mip, "mip"},
+                                                     {RenderMethod::Texture::Colormip, "colormip"},
+                                                     {RenderMethod::Texture::Filtered, "filtered"},
+                                                     {RenderMethod::Texture::FilteredTable, "filtered:table"}};
+
 std::optional<RenderMethod::Texture> parse_footprint_method(const std::string& text) {
-  if (text == "mip") return RenderMethod::Texture::Mip;
-  if (text == "colormip") return RenderMethod::Texture::Colormip;
-  if (text == "filtered") return RenderMethod::Texture::Filtered;
-  if (text == "filtered:table") return RenderMethod::Texture::FilteredTable;
+  for (const FootprintMethodName& m : kFootprintMethods)
+    if (text == m.name) return m.texture;
   return std::nullopt;
 }
 
@@ -60,18 +68,9 @@ std::string RenderMethod::name() const {
   if (diffraction.method && texture == Texture::Naive && samples_per_axis == 1)
     return std::string("diffraction:") + diffraction::diffraction_method_name(*diffraction.method);
   const std::string strata = samples_per_axis > 1 ? "ss:" + std::to_string(samples_per_axis) : "";
-  switch (texture) {
-    case Texture::Naive:
-      return strata.empty() ? "naive" : strata;
-    case Texture::Mip:
-      return strata.empty() ? "mip" : "mip:" + strata;
-    case Texture::Colormip:
-      return strata.empty() ? "colormip" : "colormip:" + strata;
-    case Texture::FilteredTable:
-      return strata.empty() ? "filtered:table" : "filtered:table:" + strata;
-    default:
-      return strata.empty() ? "filtered" : "filtered:" + strata;
-  }
+  for (const FootprintMethodName& m : kFootprintMethods)
+    if (m.texture == texture) return strata.empty() ? m.name : m.name + (":" + strata);
+  return strata.empty() ? "naive" : strata;
 }
 
 }  // namespace facet::gpu
