@@ -7,7 +7,9 @@
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
 #include "common/error.hpp"
+#include "common/phase_timings.hpp"
 #include "common/progress.hpp"
+#include "frames/frame_metadata.hpp"
 #include "frames/prepared_frames.hpp"
 #include "scene/scene_loader.hpp"
 #include "vk/context.hpp"
@@ -26,6 +28,7 @@ struct RenderOptions {
   std::string diffraction;  // empty: the diffraction materials' own "method"
   int wavelengths = 0;      // 0: the materials' own counts
   int taylor = 0;
+  bool timings = false;  // --timings: print the phases
 };
 
 // --diffraction, --wavelengths and --taylor on top of --method (they win over a diffraction:M method).
@@ -41,25 +44,42 @@ gpu::RenderMethod render_method(const RenderOptions& options) {
   return method;
 }
 
+// One line per phase on stderr, then the total: where the wall clock of `facet render` went.
+void print_timings(const PhaseTimings& phases, double gpu_ms) {
+  std::cerr << "facet: timings (wall ms):\n";
+  for (const Phase& phase : phases.phases()) {
+    std::cerr << "  " << phase.name << " " << phase.ms;
+    if (phase.name == "render") std::cerr << " (device " << gpu_ms << ")";
+    std::cerr << "\n";
+  }
+  std::cerr << "  total " << phases.total_ms() << "\n";
+}
+
 int run_render(const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  Scene scene = load_scene(options.scene);
+  PhaseTimings phases;
+  Scene scene = timed(&phases, "load", [&] { return load_scene(options.scene); });
   options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
   const gpu::RenderMethod method = render_method(options);
-  vk::Context context({options.device.device, options.device.validation});
+  vk::Context context = timed(&phases, "device", [&] {
+    return vk::Context({options.device.device, options.device.validation});
+  });
   frames::PreparedFrames prepared(scene, method, &context);
+  phases.add(prepared.preparation());
   ProgressBar progress("render", gpu::tile_count(width, height));
   frames::FrameRequest request;
   request.frame = options.frame.frame;
   request.since = start;
   request.progress = [&](std::int64_t done, std::int64_t) { progress.update(done); };
-  const frames::Frame frame = prepared.render(scene.camera, width, height, request);
+  frames::Frame frame = timed(&phases, "render", [&] { return prepared.render(scene.camera, width, height, request); });
   progress.finish();
-  frames::write_frame(options.output, frame.image, frame.metadata);
+  frames::add_phase_timings(frame.metadata, phases);
+  timed(&phases, "write", [&] { frames::write_frame(options.output, frame.image, frame.metadata); });
   std::cerr << "facet: rendered " << width << "x" << height << " in " << frame.wall_ms << " ms (GPU " << frame.gpu_ms
             << " ms in " << gpu::tile_count(width, height) << " tiles) on " << context.info().name << " -> "
             << options.output.path.string() << "\n";
+  if (options.timings) print_timings(phases, frame.gpu_ms);
   return 0;
 }
 
@@ -84,6 +104,9 @@ void add_render_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(2, 4096));
   command->add_option("--taylor", options->taylor, "Taylor terms of the diffraction BRDF (default: from the tolerance)")
       ->check(CLI::Range(1, 64));
+  command->add_flag("--timings", options->timings,
+                    "Print the wall time of each phase (load, device, upload, diffraction, pipeline, jit, render, "
+                    "write); they are also in the EXR metadata as facet:phase:<name>_ms");
   add_resolution_options(*command, options->resolution);
   add_frame_option(*command, options->frame);
   add_output_options(*command, options->output);

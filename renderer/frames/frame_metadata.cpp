@@ -18,6 +18,10 @@ void add_timings(ExrMetadata& metadata, double gpu_ms, double wall_ms) {
   metadata["facet:render_ms"] = wall_ms;
 }
 
+void add_phase_timings(ExrMetadata& metadata, const PhaseTimings& phases) {
+  for (const Phase& phase : phases.phases()) metadata["facet:phase:" + phase.name + "_ms"] = phase.ms;
+}
+
 void add_reference_metadata(ExrMetadata& metadata, const ReferenceMethod& reference) {
   metadata["facet:grid"] = static_cast<std::int64_t>(reference.grid);
   metadata["facet:seed"] = reference.seed;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "common/phase_timings.hpp"
 #include "frames/frame_method.hpp"
 #include "gpu/diffraction_upload.hpp"
 #include "image/exr_io.hpp"
@@ -18,6 +19,9 @@ ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::i
 
 // facet:gpu_ms and facet:render_ms.
 void add_timings(ExrMetadata& metadata, double gpu_ms, double wall_ms);
+
+// facet:phase:<name>_ms for every phase (load, upload, ..., render): where the wall clock went.
+void add_phase_timings(ExrMetadata& metadata, const PhaseTimings& phases);
 
 // facet:grid, facet:seed, facet:filter: the reference's sampling.
 void add_reference_metadata(ExrMetadata& metadata, const ReferenceMethod& reference);

@@ -32,7 +32,7 @@ PreparedFrames::PreparedFrames(const Scene& scene, FrameMethod method, vk::Conte
   if (!gpu_method) return;
   if (!context_) throw Error("method " + gpu_method->name() + " needs a Vulkan device");
   validation_messages_ = context_->validation_message_count();
-  pass_ = std::make_unique<gpu::DirectPass>(*context_, scene, *gpu_method);
+  pass_ = std::make_unique<gpu::DirectPass>(*context_, scene, *gpu_method, gpu::kDefaultTileSize, &preparation_);
 }
 
 Frame PreparedFrames::render(const Camera& camera, int width, int height, const FrameRequest& request) {

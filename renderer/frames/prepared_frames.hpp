@@ -11,6 +11,7 @@
 #include <optional>
 #include <utility>
 
+#include "common/phase_timings.hpp"
 #include "frames/frame_method.hpp"
 #include "gpu/direct_pass.hpp"
 #include "image/exr_io.hpp"
@@ -52,6 +53,9 @@ class PreparedFrames {
   // preparation): no image is returned then.
   Frame render(const Camera& camera, int width, int height, const FrameRequest& request = {});
 
+  // The preparation's phases (DirectPass: upload, diffraction, pipeline, jit); none for the reference.
+  const PhaseTimings& preparation() const { return preparation_; }
+
  private:
   Image render_gpu(const Camera& camera, int width, int height, const FrameRequest& request, double& gpu_ms);
   Image render_reference(const Camera& camera, int width, int height, const FrameRequest& request) const;
@@ -60,6 +64,7 @@ class PreparedFrames {
   const Scene* scene_;
   FrameMethod method_;
   vk::Context* context_;
+  PhaseTimings preparation_;
   std::uint32_t validation_messages_ = 0;  // seen up to the preparation or the previous frame
   std::unique_ptr<gpu::DirectPass> pass_;  // GPU methods only
 };

@@ -85,21 +85,42 @@ int tile_count(int width, int height, int tile_size) {
   return ((width + tile_size - 1) / tile_size) * ((height + tile_size - 1) / tile_size);
 }
 
-DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size)
+DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
+                       PhaseTimings* timings)
     : scene_(&scene),
       tile_size_(tile_size > 0 && tile_size <= kMaxTileSize
                      ? tile_size
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
       samples_per_axis_(method.samples_per_axis),
-      buffers_(upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable)),
-      diffraction_(upload_diffraction(context, scene, method.diffraction)),
+      buffers_(timed(timings, "upload",
+                     [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
+      diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
       pixels_(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size),
-      kernel_(context, {.name = "render_direct",
-                        .spirv = direct_pass_program(scene, method),
-                        .buffer_count = FACET_RENDER_BINDING_COUNT,
-                        .push_constant_bytes = sizeof(GpuTile),
-                        .specialization = specialization(scene, method, diffraction_.method)}) {
+      kernel_(timed(timings, "pipeline", [&] {
+        return vk::Kernel(context, {.name = "render_direct",
+                                    .spirv = direct_pass_program(scene, method),
+                                    .buffer_count = FACET_RENDER_BINDING_COUNT,
+                                    .push_constant_bytes = sizeof(GpuTile),
+                                    .specialization = specialization(scene, method, diffraction_.method)});
+      })) {
   check_height_field_tracing(scene, method);
+  // lavapipe JIT-compiles a pipeline on its first dispatch: one pixel here keeps that out of every
+  // frame's device time (and gives it a phase of its own).
+  timed(timings, "jit", [&] {
+    buffers_.set_camera(scene, scene.camera, 1, 1);
+    dispatch_tile(bindings(), 0, 0, 1, 1, 0);
+  });
+}
+
+double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h,
+                                 int stratum) {
+  const glm::uvec3 groups((w + FACET_RENDER_WORKGROUP - 1) / FACET_RENDER_WORKGROUP,
+                          (h + FACET_RENDER_WORKGROUP - 1) / FACET_RENDER_WORKGROUP, 1);
+  const uint32_t blocks = groups.x * groups.y;
+  const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
+  const int k = samples_per_axis_;
+  const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread};
+  return kernel_.dispatch(bindings, &tile, groups);
 }
 
 std::vector<const vk::Buffer*> DirectPass::bindings() const {
@@ -126,15 +147,8 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   for (int y0 = 0; y0 < height; y0 += tile_size_)
     for (int x0 = 0; x0 < width; x0 += tile_size_) {
       const int w = std::min(tile_size_, width - x0), h = std::min(tile_size_, height - y0);
-      glm::uvec3 groups((w + FACET_RENDER_WORKGROUP - 1) / FACET_RENDER_WORKGROUP,
-                        (h + FACET_RENDER_WORKGROUP - 1) / FACET_RENDER_WORKGROUP, 1);
-      const uint32_t blocks = groups.x * groups.y;
-      const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
-      const int k = samples_per_axis_, strata = k * k;
-      for (int s = 0; s < strata; ++s) {  // ss:K: one stratum per dispatch, accumulated in pixels_
-        GpuTile tile{uvec4(x0, y0, w, h), uvec4(s % k, s / k, s, k), spread};
-        local.gpu_ms += kernel_.dispatch(bindings, &tile, groups);
-      }
+      for (int s = 0; s < samples_per_axis_ * samples_per_axis_; ++s)  // ss:K: one stratum per dispatch,
+        local.gpu_ms += dispatch_tile(bindings, x0, y0, w, h, s);      // accumulated in pixels_
       pixels_.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) image.set(x0 + x, y0 + y, glm::vec3(tile_rgba[static_cast<size_t>(y) * w + x]));

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <functional>
+#include <span>
 
+#include "common/phase_timings.hpp"
 #include "gpu/diffraction_upload.hpp"
 #include "gpu/render_method.hpp"
 #include "gpu/scene_upload.hpp"
@@ -34,8 +36,10 @@ using TileProgress = std::function<void(int, int)>;
 // render many). Holds a reference to `scene`, which must outlive it.
 class DirectPass {
  public:
+  // `timings`, when given, receives the preparation's phases: upload (textures, MIP and moment chains),
+  // diffraction (tables), pipeline (creation) and jit (lavapipe compiles on the first dispatch, made here).
   DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method = {},
-             int tile_size = kDefaultTileSize);
+             int tile_size = kDefaultTileSize, PhaseTimings* timings = nullptr);
 
   // Renders width x height from `camera` in square tiles of `tile_size` pixels, one submission
   // per tile (K^2 for ss:K, one per stratum), so no single submission runs for seconds.
@@ -47,6 +51,8 @@ class DirectPass {
 
  private:
   std::vector<const vk::Buffer*> bindings() const;  // scene buffers, pixels, diffraction buffers
+  // Renders stratum `stratum` of ss:K into pixels_ for the tile's w x h pixels at (x0, y0); its device ms.
+  double dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h, int stratum);
 
   const Scene* scene_;
   int tile_size_;

@@ -21,6 +21,8 @@ nlohmann::json to_json(const BenchRecord& r) {
   json["gpu_ms"] = r.timing.has_gpu_time ? nlohmann::json(r.timing.gpu_ms.median) : nlohmann::json(nullptr);
   json["repeats"] = r.timing.repeats;
   json["prepare_ms"] = r.prepare_ms;
+  json["phases"] = nlohmann::json::object();
+  for (const Phase& phase : r.phases.phases()) json["phases"][phase.name] = phase.ms;
   json.update(facet::to_json(r.comparison));
   json["image"] = r.image;
   json["heatmap"] = r.heatmap;

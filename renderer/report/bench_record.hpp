@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/phase_timings.hpp"
 #include "image/image_comparison.hpp"
 #include "report/timing.hpp"
 
@@ -20,6 +21,7 @@ struct BenchRecord {
   std::optional<std::string> error;  // set: the method failed; no timing, metrics or images
   Timing timing;
   double prepare_ms = 0.0;  // wall time of preparing the method and rendering its first (warm-up) frame
+  PhaseTimings phases;      // of that: the preparation's phases and first_frame
   ImageComparison comparison;
   std::string image, heatmap;  // PNG paths relative to the output folder
 
@@ -30,7 +32,7 @@ struct BenchRecord {
 // Keys: scene, scene_file, method, width, height, device, machine, facet_version and either
 // error, or time_ms (median; device time when there is one, else wall), time_ms_min, time_ms_max,
 // time_source ("gpu" | "wall"), wall_ms (median), wall_ms_min, wall_ms_max, gpu_ms (median or null),
-// repeats, prepare_ms, the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim, flip), image, heatmap.
+// repeats, prepare_ms, phases ({name: wall ms}), the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim, flip), image, heatmap.
 nlohmann::json to_json(const BenchRecord& record);
 
 }  // namespace facet::report

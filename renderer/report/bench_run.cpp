@@ -65,8 +65,9 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
     const auto prepare_start = std::chrono::steady_clock::now();
     frames::PreparedFrames prepared(scene, method.render_method(), &context);
     const auto render = [&] { return prepared.render(scene.camera, reference.width, reference.height); };
-    // The first frame is the warm-up (lavapipe JIT-compiles on the first dispatch) and gives the image.
-    const frames::Frame first = render();
+    // The first frame is the warm-up and gives the image.
+    record.phases = prepared.preparation();
+    const frames::Frame first = timed(&record.phases, "first_frame", render);
     record.prepare_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - prepare_start).count();
     tick();

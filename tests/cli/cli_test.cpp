@@ -60,6 +60,27 @@ TEST_F(Cli, RendersTheDefaultSceneToExrAndPng) {
   EXPECT_NE(info.out.find("facet:method: \"naive\""), std::string::npos) << info.out;
 }
 
+// --timings prints each phase; the EXR carries them, and together they account for the frame's wall clock.
+TEST_F(Cli, TimingsNameEveryPhaseAndAccountForTheWallClock) {
+  auto out = dir_ / "t.exr";
+  auto r = run_command(kFacet + " render " + (kScenes / "colormap_noise_plane.json").string() + " -o " + out.string() +
+                       " --width 32 --method filtered --timings --no-preview");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ExrMetadata metadata;
+  read_exr(out, &metadata);
+  double phases_ms = 0.0;
+  for (const char* phase : {"load", "device", "upload", "diffraction", "pipeline", "jit", "render"}) {
+    EXPECT_NE(r.err.find("  " + std::string(phase) + " "), std::string::npos) << phase << " in " << r.err;
+    const double ms = std::get<double>(metadata.at("facet:phase:" + std::string(phase) + "_ms"));
+    EXPECT_GE(ms, 0.0) << phase;
+    phases_ms += ms;
+  }
+  EXPECT_NE(r.err.find("  write "), std::string::npos) << r.err;  // printed, not in the file it times
+  const double wall_ms = std::get<double>(metadata.at("facet:render_ms"));
+  EXPECT_GE(phases_ms, 0.9 * wall_ms);
+  EXPECT_LE(phases_ms, 1.01 * wall_ms + 1.0);
+}
+
 TEST_F(Cli, MalformedJsonIsOneLineError) {
   auto scene = write("bad.json", "{ \"camera\": { \"width\": 4, ");
   expect_clean_failure(run_command(kFacet + " render " + scene.string() + " -o " + (dir_ / "out.exr").string()),

@@ -63,6 +63,14 @@ void expect_record_schema(const json& r, const fs::path& out) {
   for (const char* key : {"width", "height", "repeats"})
     EXPECT_TRUE(r.contains(key) && r[key].is_number_integer()) << key;
   EXPECT_TRUE(r.contains("psnr") && (r["psnr"].is_number() || r["psnr"].is_null()));
+  // The preparation's phases and the warm-up frame: each non-negative, together within prepare_ms.
+  double phases_ms = 0.0;
+  for (const char* phase : {"upload", "diffraction", "pipeline", "jit", "first_frame"}) {
+    ASSERT_TRUE(r["phases"].contains(phase) && r["phases"][phase].is_number()) << phase << " in " << r.dump();
+    EXPECT_GE(r["phases"][phase].get<double>(), 0.0) << phase;
+    phases_ms += r["phases"][phase].get<double>();
+  }
+  EXPECT_LE(phases_ms, r["prepare_ms"].get<double>() + 1e-6);
   EXPECT_FALSE(r.contains("error"));
   EXPECT_EQ(r["width"], 48);
   EXPECT_EQ(r["height"], 27);
