@@ -1,8 +1,8 @@
-#include "report/thumbnail.hpp"
+#include "image/thumbnail.hpp"
 
 #include <algorithm>
 
-namespace facet::report {
+namespace facet {
 
 namespace {
 
@@ -48,4 +48,4 @@ ScalarImage thumbnail(const ScalarImage& image, int max_width) {
   return out;
 }
 
-}  // namespace facet::report
+}  // namespace facet
