@@ -9,7 +9,7 @@ namespace {
 constexpr int kGlyphCount = kLastGlyph - kFirstGlyph + 1;
 
 // One glyph per printable ASCII character, in code order: 7 rows of 5 columns, '#' lit. Capitals and
-// digits fill the 7 rows; lower case sits on the same baseline with a 5-row x-height, and g, j, p, q, y
+// digits fill the 7 rows; lower case has a 5-row x-height on the same baseline, and g, j, p, q, y
 // lift their bowls so their tails fit in the cell.
 constexpr std::string_view kGlyphs[kGlyphCount][kGlyphHeight] = {
     {".....", ".....", ".....", ".....", ".....", ".....", "....."},  // space
@@ -83,7 +83,7 @@ constexpr std::string_view kGlyphs[kGlyphCount][kGlyphHeight] = {
     {"....#", "....#", ".####", "#...#", "#...#", "#...#", ".####"},  // d
     {".....", ".....", ".###.", "#...#", "#####", "#....", ".###."},  // e
     {"..##.", ".#..#", ".#...", "###..", ".#...", ".#...", ".#..."},  // f
-    {".....", ".####", "#...#", "#...#", ".####", "....#", ".###."},  // g
+    {".....", ".....", ".####", "#...#", ".####", "....#", "####."},  // g
     {"#....", "#....", "#.##.", "##..#", "#...#", "#...#", "#...#"},  // h
     {"..#..", ".....", ".##..", "..#..", "..#..", "..#..", ".###."},  // i
     {"...#.", ".....", "..##.", "...#.", "...#.", "#..#.", ".##.."},  // j
