@@ -80,7 +80,7 @@ int run_compare(const CompareOptions& options) {
   const bool sheet = !options.sheet.empty();
   if (options.images.size() < 2 || (!sheet && options.images.size() > 2))
     throw Error("compare takes TEST REFERENCE, or TEST... REFERENCE with --sheet SHEET.png; got " +
-                std::to_string(options.images.size()) + " images");
+                std::to_string(options.images.size()) + (options.images.size() == 1 ? " image" : " images"));
   std::vector<Threshold> thresholds;
   for (const std::string& spec : options.fail) thresholds.push_back(parse_threshold(spec));
   std::vector<SheetImage> tests;
@@ -136,14 +136,15 @@ void add_compare_command(CLI::App& app, Action& action) {
       ->add_option("--heatmap-max", options->heatmap_max,
                    "Error shown at full scale (default: 1 for FLIP, else the map's maximum)")
       ->check(CLI::NonNegativeNumber);
-  command->add_flag("--json", options->json,
-                    "Print one JSON object: rmse, rel_mse, psnr (null if identical), max_abs, ssim, flip");
+  command->add_flag(
+      "--json", options->json,
+      "Print one JSON object (a line per test): rmse, rel_mse, psnr (null if identical), max_abs, ssim, flip");
   command
       ->add_option("--fail", options->fail,
                    "METRIC>VALUE or METRIC<VALUE (repeatable): exit 1 if a metric crosses it, e.g. rmse>0.01, "
                    "psnr<30")
       ->allow_extra_args(false);
-  command->add_option("--crop", options->crop, "x,y,w,h: compare only this region of both images")
+  command->add_option("--crop", options->crop, "x,y,w,h: compare only this region of every image")
       ->delimiter(',')
       ->expected(4);
   command->callback([&action, options] { action = [options] { return run_compare(*options); }; });

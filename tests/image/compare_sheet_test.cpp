@@ -22,7 +22,8 @@ constexpr Rgb8 kText = {235, 235, 235};
 Image gradient(int width, int height, glm::vec3 tint) {
   Image image(width, height);
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) image.set(x, y, tint * (0.1f + 0.8f * static_cast<float>(x + y) / (width + height)));
+    for (int x = 0; x < width; ++x)
+      image.set(x, y, tint * (0.1f + 0.8f * static_cast<float>(x + y) / (width + height)));
   return image;
 }
 
@@ -62,9 +63,10 @@ void expect_pasted(const Rgb8Image& sheet, const Rgb8Image& picture, int x0, int
 }
 
 TEST(CompareSheet, LabelsSayMethodTimeAndError) {
-  const SheetImage timed{Image(1, 1),
-                         {{"facet:method", std::string("filtered")}, {"facet:gpu_ms", 62.43}, {"facet:render_ms", 410.2}},
-                         "frame"};
+  const SheetImage timed{
+      Image(1, 1),
+      {{"facet:method", std::string("filtered")}, {"facet:gpu_ms", 62.43}, {"facet:render_ms", 410.2}},
+      "frame"};
   ImageComparison error;
   error.rmse = 0.012345;
   error.flip = 0.0814;
@@ -73,7 +75,9 @@ TEST(CompareSheet, LabelsSayMethodTimeAndError) {
   // A PNG (no metadata) is named by its file and its times are left out.
   EXPECT_EQ(test_label({Image(1, 1), {}, "naive"}, error)[0], "naive");
   const SheetImage reference{
-      Image(1, 1), {{"facet:method", std::string("reference")}, {"facet:grid", std::int64_t{32}}, {"facet:render_ms", 12034.0}}, "ref"};
+      Image(1, 1),
+      {{"facet:method", std::string("reference")}, {"facet:grid", std::int64_t{32}}, {"facet:render_ms", 12034.0}},
+      "ref"};
   EXPECT_EQ(reference_label(reference)[0], "reference  grid 32  wall 12034 ms");
 }
 
@@ -85,8 +89,8 @@ TEST(CompareSheet, SizeFollowsTheLayout) {
   EXPECT_GE(layout.column_width, 32);
   // Columns of margin + column, and rows of label strip, picture, heat-map label and heat map.
   EXPECT_EQ(sheet.picture.width, layout.margin + 3 * (layout.column_width + layout.margin));
-  EXPECT_EQ(sheet.picture.height, layout.margin + 2 * layout.line_height + 18 + layout.margin + layout.line_height +
-                                      18 + layout.margin);
+  EXPECT_EQ(sheet.picture.height,
+            layout.margin + 2 * layout.line_height + 18 + layout.margin + layout.line_height + 18 + layout.margin);
   EXPECT_EQ(sheet.picture.width, layout.width);
   EXPECT_EQ(sheet.picture.height, layout.height);
 }
@@ -111,8 +115,8 @@ TEST(CompareSheet, EveryLabelStripHasText) {
     const int x = layout.column_x(column);
     const int strip_height = layout.picture_y() - layout.label_y();
     EXPECT_GT(text_pixels(sheet.picture, x, layout.label_y(), layout.column_width, strip_height), 50) << column;
-    const int heatmap_label = text_pixels(sheet.picture, x, layout.heatmap_label_y(), layout.column_width,
-                                          layout.line_height);
+    const int heatmap_label =
+        text_pixels(sheet.picture, x, layout.heatmap_label_y(), layout.column_width, layout.line_height);
     if (column < 2)
       EXPECT_GT(heatmap_label, 20) << column;
     else
