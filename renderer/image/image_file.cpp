@@ -21,9 +21,10 @@ Image linear_from_png(const PngImage& png) {
 
 }  // namespace
 
-Image read_image(const std::filesystem::path& path) {
+Image read_image(const std::filesystem::path& path, ExrMetadata* metadata) {
+  if (metadata != nullptr) metadata->clear();
   const auto extension = path.extension();
-  if (extension == ".exr") return read_exr(path);
+  if (extension == ".exr") return read_exr(path, metadata);
   if (extension == ".png") return linear_from_png(read_png(path));
   throw Error(path.string() + ": not an image facet reads (.exr or .png)");
 }

@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "image/atomic_file.hpp"
 #include "image/io_error.hpp"
@@ -120,13 +121,18 @@ void write_png_rgb8(const std::filesystem::path& path, int width, int height, st
   write_file_atomically(path, [&](std::FILE* file) { write_rgb8(file, width, height, rgb); });
 }
 
-void write_png_preview(const std::filesystem::path& path, const Image& image, double exposure_stops) {
-  if (image.rgb.size() != 3 * image.pixel_count())
-    throw io_error(path, "image has " + std::to_string(image.rgb.size()) + " floats, expected 3 per pixel");
+Rgb8Image preview_rgb8(const Image& image, double exposure_stops) {
   const double scale = std::exp2(exposure_stops);
   std::vector<std::uint8_t> encoded(image.rgb.size());
   for (std::size_t i = 0; i < encoded.size(); ++i) encoded[i] = srgb_display8(scale * image.rgb[i]);
-  write_png_rgb8(path, image.width, image.height, encoded);
+  return Rgb8Image(image.width, image.height, std::move(encoded));
+}
+
+void write_png_preview(const std::filesystem::path& path, const Image& image, double exposure_stops) {
+  if (image.rgb.size() != 3 * image.pixel_count())
+    throw io_error(path, "image has " + std::to_string(image.rgb.size()) + " floats, expected 3 per pixel");
+  const Rgb8Image preview = preview_rgb8(image, exposure_stops);
+  write_png_rgb8(path, preview.width, preview.height, preview.bytes);
 }
 
 PngImage read_png(const std::filesystem::path& path) {

@@ -7,11 +7,15 @@
 #include <vector>
 
 #include "image/image.hpp"
+#include "image/rgb8_image.hpp"
 
 namespace facet {
 
 // Display preview of a scene-linear image: each channel scaled by 2^exposure_stops, clamped to
-// [0,1], sRGB-encoded and rounded to 8 bits. Written atomically like write_exr.
+// [0,1], sRGB-encoded and rounded to 8 bits. The one tone mapping of every picture facet shows.
+Rgb8Image preview_rgb8(const Image& image, double exposure_stops = 0.0);
+
+// preview_rgb8 written atomically like write_exr.
 void write_png_preview(const std::filesystem::path& path, const Image& image, double exposure_stops = 0.0);
 
 // Already-encoded 8-bit RGB (3 bytes per pixel, top row first), e.g. a false-colour error map.

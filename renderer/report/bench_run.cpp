@@ -15,11 +15,11 @@
 #include "image/flip.hpp"
 #include "image/heatmap.hpp"
 #include "image/png_io.hpp"
+#include "image/thumbnail.hpp"
 #include "report/method_catalogue.hpp"
 #include "report/reference_cache.hpp"
 #include "report/run_info.hpp"
 #include "report/svg_plot.hpp"
-#include "report/thumbnail.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace facet::report {

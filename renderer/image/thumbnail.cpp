@@ -1,8 +1,8 @@
-#include "report/thumbnail.hpp"
+#include "image/thumbnail.hpp"
 
 #include <algorithm>
 
-namespace facet::report {
+namespace facet {
 
 namespace {
 
@@ -26,26 +26,24 @@ std::vector<float> box_reduce(const std::vector<float>& in, int width, int heigh
 
 int reduction_factor(int width, int max_width) { return std::max(1, (width + max_width - 1) / max_width); }
 
+// Picture is Image (3 samples per pixel in .rgb) or ScalarImage (1 in .values).
+template <typename Picture>
+Picture reduced(const Picture& image, std::vector<float> Picture::*samples, int channels, int max_width) {
+  const int f = reduction_factor(image.width, max_width);
+  if (f == 1) return image;
+  Picture out;
+  out.width = (image.width + f - 1) / f;
+  out.height = (image.height + f - 1) / f;
+  out.*samples = box_reduce(image.*samples, image.width, image.height, channels, f, out.width, out.height);
+  return out;
+}
+
 }  // namespace
 
-Image thumbnail(const Image& image, int max_width) {
-  const int f = reduction_factor(image.width, max_width);
-  if (f == 1) return image;
-  Image out;
-  out.width = (image.width + f - 1) / f;
-  out.height = (image.height + f - 1) / f;
-  out.rgb = box_reduce(image.rgb, image.width, image.height, 3, f, out.width, out.height);
-  return out;
-}
+Image thumbnail(const Image& image, int max_width) { return reduced(image, &Image::rgb, 3, max_width); }
 
 ScalarImage thumbnail(const ScalarImage& image, int max_width) {
-  const int f = reduction_factor(image.width, max_width);
-  if (f == 1) return image;
-  ScalarImage out;
-  out.width = (image.width + f - 1) / f;
-  out.height = (image.height + f - 1) / f;
-  out.values = box_reduce(image.values, image.width, image.height, 1, f, out.width, out.height);
-  return out;
+  return reduced(image, &ScalarImage::values, 1, max_width);
 }
 
-}  // namespace facet::report
+}  // namespace facet
