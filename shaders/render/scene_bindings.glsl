@@ -6,7 +6,9 @@
 #include "layout/render_layout.glsl"
 #include "layout/scene_layout.glsl"
 
-layout(std430, binding = FACET_RENDER_BINDING_GLOBALS) readonly buffer Globals { GpuGlobals globals; };
+// The globals are a uniform buffer: lavapipe reads a storage buffer one invocation at a time inside
+// any branch or loop (vk::BufferKind), a uniform buffer's constant offsets once for all.
+layout(std140, binding = FACET_RENDER_BINDING_GLOBALS) uniform Globals { GpuGlobals globals; };
 layout(std430, binding = FACET_RENDER_BINDING_PLANES) readonly buffer Planes { GpuPlane planes[]; };
 layout(std430, binding = FACET_RENDER_BINDING_SPHERES) readonly buffer Spheres { GpuSphere spheres[]; };
 layout(std430, binding = FACET_RENDER_BINDING_BVH_NODES) readonly buffer Nodes { GpuBvhNode nodes[]; };
