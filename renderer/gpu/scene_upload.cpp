@@ -64,8 +64,9 @@ std::vector<const vk::Buffer*> SceneBuffers::bindings(const vk::Buffer& pixels) 
 }
 
 std::vector<vk::BufferKind> SceneBuffers::binding_kinds() {
-  std::vector<vk::BufferKind> kinds(FACET_RENDER_SCENE_BINDING_COUNT, vk::BufferKind::Storage);
+  std::vector<vk::BufferKind> kinds(FACET_RENDER_SCENE_BINDING_COUNT, vk::BufferKind::Texels);
   kinds[FACET_RENDER_BINDING_GLOBALS] = vk::BufferKind::Uniform;
+  kinds[FACET_RENDER_BINDING_PIXELS] = vk::BufferKind::Storage;
   return kinds;
 }
 
