@@ -160,7 +160,8 @@ SurfaceUv surface_uv(Hit hit, vec3 p) {
     return SurfaceUv(vec2(dot(r, plane.tangent.xyz), dot(r, bitangent)) * scale, plane.tangent.xyz / scale.x,
                      bitangent / scale.y);
   }
-  if (hit.primitive == kSphere) {
+  // lavapipe runs every branch for every pixel: absent primitive kinds are compiled out here too.
+  if (kHasSpheres && hit.primitive == kSphere) {
     // u: longitude about +y from +z, v: polar angle from +y (both in [0, 1]).
     vec4 s = sphere_at(hit.index).center_radius;
     vec3 n = normalize(p - s.xyz);
@@ -170,6 +171,7 @@ SurfaceUv surface_uv(Hit hit, vec3 p) {
     vec3 dpdv = FACET_PI * s.w * vec3(cos(theta) * sin(phi), -sin(theta), cos(theta) * cos(phi));
     return SurfaceUv(vec2(0.5 + phi * (0.5 * FACET_INV_PI), theta * FACET_INV_PI), dpdu, dpdv);
   }
+  if (!kHasTriangles) return SurfaceUv(vec2(0.0), vec3(0.0), vec3(0.0));  // not reached: hits are planes or spheres
   GpuTriangle tri = triangle_at(hit.index);
   vec2 b = hit.barycentric;
   vec2 uv0 = tri.uv01.xy, uv1 = tri.uv01.zw, uv2 = tri.uv2.xy;
