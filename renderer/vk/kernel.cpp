@@ -17,7 +17,8 @@ VkDescriptorType descriptor_type(BufferKind kind) {
 }
 
 std::vector<BufferKind> kinds_of(const KernelDesc& desc) {
-  if (desc.buffer_kinds.size() > desc.buffer_count) throw Error("internal: kernel " + desc.name + ": more buffer kinds than buffers");
+  if (desc.buffer_kinds.size() > desc.buffer_count)
+    throw Error("internal: kernel " + desc.name + ": more buffer kinds than buffers");
   std::vector<BufferKind> kinds = desc.buffer_kinds;
   kinds.resize(desc.buffer_count, BufferKind::Storage);
   return kinds;
@@ -114,8 +115,8 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
       return {limits.maxStorageBufferRange, "storage buffer range"};
     }();
     if (buffers[i]->size() > range)
-      throw Error("kernel " + name_ + ": a buffer of " + std::to_string(buffers[i]->size()) + " bytes exceeds the device's " +
-                  what + " of " + std::to_string(range) + " bytes");
+      throw Error("kernel " + name_ + ": a buffer of " + std::to_string(buffers[i]->size()) +
+                  " bytes exceeds the device's " + what + " of " + std::to_string(range) + " bytes");
   }
 
   VkDevice device = context_->device();

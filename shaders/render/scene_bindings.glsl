@@ -17,7 +17,8 @@ layout(binding = FACET_RENDER_BINDING_SPHERES) uniform usamplerBuffer sphere_tex
 layout(binding = FACET_RENDER_BINDING_BVH_NODES) uniform usamplerBuffer node_texels;
 layout(binding = FACET_RENDER_BINDING_TRIANGLES) uniform usamplerBuffer triangle_texels;
 layout(binding = FACET_RENDER_BINDING_MATERIALS) uniform usamplerBuffer material_texels;
-layout(std430, binding = FACET_RENDER_BINDING_PIXELS) buffer Pixels { vec4 pixels[]; };  // this tile's pixels, row-major (ss:K accumulates)
+// This tile's pixels, row-major (ss:K accumulates).
+layout(std430, binding = FACET_RENDER_BINDING_PIXELS) buffer Pixels { vec4 pixels[]; };
 layout(binding = FACET_RENDER_BINDING_TEXTURE_LEVELS) uniform usamplerBuffer texture_level_texels;
 layout(binding = FACET_RENDER_BINDING_TEXELS) uniform usamplerBuffer texel_texels;
 layout(binding = FACET_RENDER_BINDING_COLORMAPS) uniform usamplerBuffer colormap_texels;
@@ -44,8 +45,9 @@ GpuBvhNode node_at(uint i) {
 GpuTriangle triangle_at(uint i) {
   uint k = 9u * i;
   return GpuTriangle(FACET_F(triangle_texels, k), FACET_F(triangle_texels, k + 1u), FACET_F(triangle_texels, k + 2u),
-                     FACET_F(triangle_texels, k + 3u), FACET_F(triangle_texels, k + 4u), FACET_F(triangle_texels, k + 5u),
-                     FACET_F(triangle_texels, k + 6u), FACET_F(triangle_texels, k + 7u), FACET_U(triangle_texels, k + 8u));
+                     FACET_F(triangle_texels, k + 3u), FACET_F(triangle_texels, k + 4u),
+                     FACET_F(triangle_texels, k + 5u), FACET_F(triangle_texels, k + 6u),
+                     FACET_F(triangle_texels, k + 7u), FACET_U(triangle_texels, k + 8u));
 }
 
 GpuMaterial material_at(uint i) {

@@ -104,7 +104,8 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
     }
 #endif
     float t = intersect_plane(o, d, plane.point.xyz, plane.normal.xyz, t_min, hit.t);
-    if (t > 0.0 && inside_plane_rectangle(plane, o + t * d)) hit = Hit(t, plane.normal.xyz, plane.material.x, kPlane, i, vec2(0.0));
+    if (t > 0.0 && inside_plane_rectangle(plane, o + t * d))
+      hit = Hit(t, plane.normal.xyz, plane.material.x, kPlane, i, vec2(0.0));
   }
   for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
     GpuSphere sphere = sphere_at(i);
