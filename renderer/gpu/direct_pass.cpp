@@ -101,7 +101,8 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                                     .spirv = direct_pass_program(scene, method),
                                     .buffer_count = FACET_RENDER_BINDING_COUNT,
                                     .push_constant_bytes = sizeof(GpuTile),
-                                    .specialization = specialization(scene, method, diffraction_.method)});
+                                    .specialization = specialization(scene, method, diffraction_.method),
+                                    .buffer_kinds = SceneBuffers::binding_kinds()});
       })) {
   check_height_field_tracing(scene, method);
   // lavapipe JIT-compiles a pipeline on its first dispatch: one pixel here keeps that out of every

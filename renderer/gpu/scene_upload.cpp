@@ -63,6 +63,13 @@ std::vector<const vk::Buffer*> SceneBuffers::bindings(const vk::Buffer& pixels) 
   return slots;
 }
 
+std::vector<vk::BufferKind> SceneBuffers::binding_kinds() {
+  std::vector<vk::BufferKind> kinds(FACET_RENDER_SCENE_BINDING_COUNT, vk::BufferKind::Texels);
+  kinds[FACET_RENDER_BINDING_GLOBALS] = vk::BufferKind::Uniform;
+  kinds[FACET_RENDER_BINDING_PIXELS] = vk::BufferKind::Storage;
+  return kinds;
+}
+
 void SceneBuffers::set_camera(const Scene& scene, const Camera& camera, int width, int height) {
   const CameraFrame frame = camera_frame(camera, width, height);
   GpuGlobals g{};

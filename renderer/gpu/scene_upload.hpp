@@ -26,6 +26,9 @@ struct SceneBuffers {
   // Slots 0..FACET_RENDER_SCENE_BINDING_COUNT-1 of the direct pass, each buffer at its named slot
   // (shaders/layout/render_layout.glsl), `pixels` at FACET_RENDER_BINDING_PIXELS.
   std::vector<const vk::Buffer*> bindings(const vk::Buffer& pixels) const;
+  // How the shaders bind those slots (render/scene_bindings.glsl): the globals as a uniform buffer,
+  // the pixels (written) as a storage buffer, every other slot as a texel buffer.
+  static std::vector<vk::BufferKind> binding_kinds();
   // Writes the camera block of the globals for `camera` and an image of width x height (the
   // scene's own camera and resolution may be overridden per frame).
   void set_camera(const Scene& scene, const Camera& camera, int width, int height);

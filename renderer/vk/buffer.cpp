@@ -9,7 +9,9 @@ namespace facet::vk {
 
 Buffer::Buffer(Context& context, VkDeviceSize bytes)
     : Buffer(context, bytes,
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
+                 VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                 VK_BUFFER_USAGE_TRANSFER_DST_BIT,
              false) {}
 
 Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, bool host_visible)
@@ -53,11 +55,24 @@ Buffer::Buffer(Buffer&& other) noexcept
       size_(other.size_),
       buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
       memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
-      mapped_(std::exchange(other.mapped_, nullptr)) {}
+      mapped_(std::exchange(other.mapped_, nullptr)),
+      texel_view_(std::exchange(other.texel_view_, VK_NULL_HANDLE)) {}
 
 Buffer::~Buffer() {
+  if (texel_view_) vkDestroyBufferView(context_->device(), texel_view_, nullptr);
   if (buffer_) vkDestroyBuffer(context_->device(), buffer_, nullptr);
   if (memory_) vkFreeMemory(context_->device(), memory_, nullptr);
+}
+
+VkBufferView Buffer::texel_view() const {
+  if (texel_view_) return texel_view_;
+  if (size_ < 16) throw Error("internal: a texel view of a buffer smaller than one texel");
+  VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  info.buffer = buffer_;
+  info.format = VK_FORMAT_R32G32B32A32_UINT;
+  info.range = VK_WHOLE_SIZE;
+  check(vkCreateBufferView(context_->device(), &info, nullptr, &texel_view_), "vkCreateBufferView");
+  return texel_view_;
 }
 
 void Buffer::copy(VkBuffer from, VkBuffer to, VkDeviceSize bytes, VkDeviceSize from_offset,

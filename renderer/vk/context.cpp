@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <iostream>
 
 #include "common/error.hpp"
@@ -210,11 +211,14 @@ Context::Context(const ContextOptions& options) : validation_(options.validation
     pool.queueFamilyIndex = queue_family_;
     check(vkCreateCommandPool(device_, &pool, nullptr, &command_pool_), "vkCreateCommandPool");
 
-    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 256}, {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 64}};
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 256},
+                                    {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 64},
+                                    {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 64},
+                                    {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 256}};
     VkDescriptorPoolCreateInfo descriptors{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     descriptors.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
     descriptors.maxSets = 32;
-    descriptors.poolSizeCount = 2;
+    descriptors.poolSizeCount = static_cast<uint32_t>(std::size(sizes));
     descriptors.pPoolSizes = sizes;
     check(vkCreateDescriptorPool(device_, &descriptors, nullptr, &descriptor_pool_), "vkCreateDescriptorPool");
 

@@ -1,29 +1,53 @@
 #include "vk/kernel.hpp"
 
+#include <utility>
+
 #include "common/error.hpp"
 
 namespace facet::vk {
+
+namespace {
+VkDescriptorType descriptor_type(BufferKind kind) {
+  switch (kind) {
+    case BufferKind::Uniform: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case BufferKind::Texels: return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    case BufferKind::Storage: break;
+  }
+  return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+
+std::vector<BufferKind> kinds_of(const KernelDesc& desc) {
+  if (desc.buffer_kinds.size() > desc.buffer_count)
+    throw Error("internal: kernel " + desc.name + ": more buffer kinds than buffers");
+  std::vector<BufferKind> kinds = desc.buffer_kinds;
+  kinds.resize(desc.buffer_count, BufferKind::Storage);
+  return kinds;
+}
+}  // namespace
 
 Kernel::Kernel(Context& context, const KernelDesc& desc)
     : context_(&context),
       name_(desc.name),
       buffer_count_(desc.buffer_count),
+      buffer_kinds_(kinds_of(desc)),
       image_count_(desc.image_count),
       push_constant_bytes_(desc.push_constant_bytes) {
   if (desc.push_constant_bytes > context.limits().maxPushConstantsSize)
     throw Error("kernel " + name_ + ": push constants exceed the device limit");
   PipelineKey key{
-      {desc.spirv.begin(), desc.spirv.end()}, desc.buffer_count, desc.image_count, desc.push_constant_bytes, {}};
+      {desc.spirv.begin(), desc.spirv.end()}, desc.buffer_count, desc.image_count, desc.push_constant_bytes, {}, {}};
+  for (BufferKind kind : buffer_kinds_) key.buffer_kinds.push_back(static_cast<uint32_t>(kind));
   for (const auto& constant : desc.specialization) key.specialization.emplace_back(constant.id, constant.value);
-  compiled_ = context.pipelines().get(std::move(key), [&] { return compile(context.device(), desc); });
+  compiled_ = context.pipelines().get(std::move(key), [&] { return compile(context.device(), desc, buffer_kinds_); });
 }
 
-std::shared_ptr<const CompiledKernel> Kernel::compile(VkDevice device, const KernelDesc& desc) {
+std::shared_ptr<const CompiledKernel> Kernel::compile(VkDevice device, const KernelDesc& desc,
+                                                      std::span<const BufferKind> kinds) {
   auto compiled = std::make_shared<CompiledKernel>();
   compiled->device = device;
   std::vector<VkDescriptorSetLayoutBinding> bindings(desc.buffer_count + desc.image_count);
   for (uint32_t i = 0; i < bindings.size(); ++i)
-    bindings[i] = {i, i < desc.buffer_count ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1,
+    bindings[i] = {i, i < desc.buffer_count ? descriptor_type(kinds[i]) : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1,
                    VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set_info.bindingCount = static_cast<uint32_t>(bindings.size());
@@ -81,11 +105,19 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
                   " workgroups exceeds the device limit");
   for (size_t i = 0; i < buffers.size(); ++i)
     if (!buffers[i]) throw Error("internal: kernel " + name_ + ": no buffer at binding " + std::to_string(i));
-  for (const Buffer* buffer : buffers)
-    if (buffer->size() > limits.maxStorageBufferRange)
-      throw Error("kernel " + name_ + ": a buffer of " + std::to_string(buffer->size()) +
-                  " bytes exceeds the device's storage buffer range of " +
-                  std::to_string(limits.maxStorageBufferRange) + " bytes");
+  for (size_t i = 0; i < buffers.size(); ++i) {
+    const auto [range, what] = [&]() -> std::pair<VkDeviceSize, const char*> {
+      switch (buffer_kinds_[i]) {
+        case BufferKind::Uniform: return {limits.maxUniformBufferRange, "uniform buffer range"};
+        case BufferKind::Texels: return {VkDeviceSize{16} * limits.maxTexelBufferElements, "texel buffer size"};
+        case BufferKind::Storage: break;
+      }
+      return {limits.maxStorageBufferRange, "storage buffer range"};
+    }();
+    if (buffers[i]->size() > range)
+      throw Error("kernel " + name_ + ": a buffer of " + std::to_string(buffers[i]->size()) +
+                  " bytes exceeds the device's " + what + " of " + std::to_string(range) + " bytes");
+  }
 
   VkDevice device = context_->device();
   VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -102,6 +134,7 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
   } release{device, context_->descriptor_pool(), set};
 
   std::vector<VkDescriptorBufferInfo> buffer_infos(buffers.size());
+  std::vector<VkBufferView> texel_views(buffers.size());
   std::vector<VkDescriptorImageInfo> image_infos(images.size());
   std::vector<VkWriteDescriptorSet> writes(buffers.size() + images.size());
   for (uint32_t i = 0; i < writes.size(); ++i) {
@@ -109,9 +142,13 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
     writes[i].dstSet = set;
     writes[i].dstBinding = i;
     writes[i].descriptorCount = 1;
-    if (i < buffers.size()) {
+    if (i < buffers.size() && buffer_kinds_[i] == BufferKind::Texels) {
+      texel_views[i] = buffers[i]->texel_view();
+      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+      writes[i].pTexelBufferView = &texel_views[i];
+    } else if (i < buffers.size()) {
       buffer_infos[i] = {buffers[i]->handle(), 0, VK_WHOLE_SIZE};
-      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+      writes[i].descriptorType = descriptor_type(buffer_kinds_[i]);
       writes[i].pBufferInfo = &buffer_infos[i];
     } else {
       image_infos[i - buffers.size()] = {VK_NULL_HANDLE, images[i - buffers.size()]->view(), VK_IMAGE_LAYOUT_GENERAL};

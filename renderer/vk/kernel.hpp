@@ -1,6 +1,6 @@
-// A compute kernel: a SPIR-V module specialised into a pipeline, with storage buffers at
-// bindings 0..B-1 of set 0, storage images at bindings B..B+I-1, and an optional push-constant
-// block.
+// A compute kernel: a SPIR-V module specialised into a pipeline, with buffers at bindings 0..B-1
+// of set 0 (each a storage buffer, a uniform buffer or a uniform texel buffer), storage images at
+// bindings B..B+I-1, and an optional push-constant block.
 //
 // Specialization constants select features at pipeline creation, so a scene compiles only
 // what it uses; kernels with the same module and specialization share one compiled pipeline
@@ -36,6 +36,7 @@ struct KernelDesc {
   uint32_t push_constant_bytes = 0;
   uint32_t image_count = 0;
   std::vector<SpecConstant> specialization;
+  std::vector<BufferKind> buffer_kinds = {};  // per binding; bindings beyond it are Storage
 };
 
 class Kernel {
@@ -55,9 +56,11 @@ class Kernel {
   Context* context_;
   std::string name_;
   uint32_t buffer_count_;
+  std::vector<BufferKind> buffer_kinds_;  // one per binding
   uint32_t image_count_;
   uint32_t push_constant_bytes_;
-  static std::shared_ptr<const CompiledKernel> compile(VkDevice device, const KernelDesc& desc);
+  static std::shared_ptr<const CompiledKernel> compile(VkDevice device, const KernelDesc& desc,
+                                                       std::span<const BufferKind> kinds);
 
   std::shared_ptr<const CompiledKernel> compiled_;
 };

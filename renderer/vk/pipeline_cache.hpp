@@ -35,6 +35,7 @@ struct PipelineKey {
   uint32_t image_count = 0;
   uint32_t push_constant_bytes = 0;
   std::vector<std::pair<uint32_t, uint32_t>> specialization;  // (id, value), in the caller's order
+  std::vector<uint32_t> buffer_kinds;  // vk::BufferKind per binding
   auto operator<=>(const PipelineKey&) const = default;
 };
 

@@ -68,7 +68,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   vec3 n = normalize(hit.normal);
   if (dot(n, d) > 0.0) n = -n;
   vec3 l = globals.light_direction.xyz;
-  GpuMaterial m = materials[hit.material];
+  GpuMaterial m = material_at(hit.material);
 #ifdef FACET_HEIGHT_FIELDS
   if (kHasMicrosurface && hit.primitive == kHeightField)
     return microsurface_field_radiance(m, hit, o, d, p, n, camera_ray(film + vec2(pixel_step, 0.0)),
@@ -76,11 +76,13 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
 #endif
   // Offset the shadow ray's origin by a distance relative to the scene's scale at p.
   float visibility = dot(n, l) > 0.0 && occluded(p + n * (1e-4 * max(1.0, length(p))), l, hit, n, kTracesHeightFields) ? 0.0 : 1.0;
-  if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE)  // finite planes only (scene loader)
-    return microsurface_radiance(m, planes[hit.index],
-                                 microsurface_footprint(m, planes[hit.index], o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
-                                                        camera_ray(film + vec2(0.0, pixel_step)), planes[hit.index].normal.xyz),
+  if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE) {  // finite planes only (scene loader)
+    GpuPlane plane = plane_at(hit.index);
+    return microsurface_radiance(m, plane,
+                                 microsurface_footprint(m, plane, o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
+                                                        camera_ray(film + vec2(0.0, pixel_step)), plane.normal.xyz),
                                  d, l, visibility, false);
+  }
   if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
     return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
                                visibility, globals.ambient.rgb);

@@ -41,14 +41,14 @@ struct HeightField {
 // heights at texture level `vertices`: (z, dz/dx, dz/dy), z about the material's z_offset, slopes
 // per world unit (delta = texel size).
 vec3 heightfield_point(uint vertices, vec2 q, float delta) {
-  uvec4 info = texture_levels[vertices].info;
+  uvec4 info = texture_level_at(vertices).info;
   int w = int(info.y), h = int(info.z);
   vec2 cell = floor(q);
   vec2 f = q - cell;
   int i0 = int(mod(cell.x, float(w))), j0 = int(mod(cell.y, float(h)));
   int i1 = (i0 + 1) % w, j1 = (j0 + 1) % h;
-  float z00 = texels[info.x + uint(j0 * w + i0)].x, z10 = texels[info.x + uint(j0 * w + i1)].x;
-  float z01 = texels[info.x + uint(j1 * w + i0)].x, z11 = texels[info.x + uint(j1 * w + i1)].x;
+  float z00 = texel_at(info.x + uint(j0 * w + i0)).x, z10 = texel_at(info.x + uint(j0 * w + i1)).x;
+  float z01 = texel_at(info.x + uint(j1 * w + i0)).x, z11 = texel_at(info.x + uint(j1 * w + i1)).x;
   float z = mix(mix(z00, z10, f.x), mix(z01, z11, f.x), f.y);
   return vec3(z, mix(z10 - z00, z11 - z01, f.y) / delta, mix(z01 - z00, z11 - z10, f.x) / delta);
 }
@@ -63,13 +63,13 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   f.top = int(m.kind.w) - 1;
   f.leaf = min(int(lambda), f.top);
   f.blend = f.leaf < f.top ? lambda - float(f.leaf) : 0.0;
-  uvec4 info = texture_levels[f.vertices].info;
+  uvec4 info = texture_level_at(f.vertices).info;
   f.size = ivec2(info.yz);
   f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
   int most = max(f.tiles.x, f.tiles.y), levels = 0;
   while ((1 << levels) < most) ++levels;
   f.tile_levels = levels;
-  f.range = texels[texture_levels[f.bounds + uint(f.top)].info.x].xy;
+  f.range = texel_at(texture_level_at(f.bounds + uint(f.top)).info.x).xy;
   return f;
 }
 
@@ -114,9 +114,9 @@ vec4 heightfield_extent(HeightField f, ivec4 n) {
 // The level-l surface's height at corner (i, j) of the level's node grid, i <= width, j <= height
 // (the last corner is the first: the field repeats).
 float heightfield_corner(HeightField f, int level, int i, int j) {
-  uvec4 info = texture_levels[level == 0 ? f.vertices : f.corners + uint(level)].info;
+  uvec4 info = texture_level_at(level == 0 ? f.vertices : f.corners + uint(level)).info;
   int w = int(info.y), h = int(info.z);
-  return texels[info.x + uint((j == h ? 0 : j) * w + (i == w ? 0 : i))].x;
+  return texel_at(info.x + uint((j == h ? 0 : j) * w + (i == w ? 0 : i))).x;
 }
 
 // The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e):
@@ -140,7 +140,7 @@ vec4 heightfield_leaf_corners(HeightField f, ivec4 n, vec4 e) {
 // The record of MIP level l (<= top) of the bounds the ray tests: dilated when it traces a smoothed
 // surface.
 uvec4 heightfield_level(HeightField f, int l) {
-  return texture_levels[(f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(min(l, f.top))].info;
+  return texture_level_at((f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(min(l, f.top))).info;
 }
 
 // The planes splitting node n (level > 0) into its children, per axis (lo, mid, hi) in texels; mid is
@@ -180,7 +180,7 @@ float heightfield_child_enter(HeightField f, HeightFieldRay r, ivec4 c, vec2 tx,
   vec2 z = f.range;
   if (c.x <= f.top) {  // a MIP node: padding entries outside the level are empty
     if (c.y >= int(level.y) || c.z >= int(level.z)) return kHeightFieldFar;
-    z = texels[level.x + uint(c.z) * level.y + uint(c.y)].xy;
+    z = texel_at(level.x + uint(c.z) * level.y + uint(c.y)).xy;
     if (c.x == f.leaf && (f.leaf > 0 || f.blend > 0.0)) {
       // A smoothed leaf lies between its corners (a bilinear patch), which the next level's corners
       // reach beyond the dilated bounds.

@@ -12,7 +12,7 @@
 // detail inside it (Smith), so their light is only tested against the other objects; a blend between
 // (T1). p: the hit, n: its micro-normal facing the viewer, d_dx, d_dy: the neighbouring pixels' rays.
 vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, vec3 o, vec3 d, vec3 p, vec3 n, vec3 d_dx, vec3 d_dy, vec3 l) {
-  GpuPlane plane = planes[hit.index];
+  GpuPlane plane = plane_at(hit.index);
   MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy, plane.normal.xyz);
   if (kTextureMethod >= 3u) fp = microsurface_footprint_on_surface(m, plane, o, d, p, d_dx, d_dy, fp);
   float w = kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0;

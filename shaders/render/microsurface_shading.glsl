@@ -21,10 +21,10 @@
 
 // height_colormap(z) slope_colormap(|s|), each factor only when the material has it.
 vec3 microsurface_height_colour(GpuMaterial m, float z) {
-  return m.texture.z == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormaps[m.texture.z], z + m.params.z);
+  return m.texture.z == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormap_record(m.texture.z), z + m.params.z);
 }
 vec3 microsurface_slope_colour(GpuMaterial m, vec2 s) {
-  return m.texture.w == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormaps[m.texture.w], length(s));
+  return m.texture.w == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormap_record(m.texture.w), length(s));
 }
 
 struct MicrosurfaceMoments {
@@ -141,7 +141,7 @@ MicrosurfaceFootprint microsurface_footprint(GpuMaterial m, GpuPlane plane, vec3
                                              vec3 d_dy, vec3 n_surface) {
   vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
   float delta = m.albedo.w;
-  vec2 size = vec2(texture_levels[m.texture.x].info.yz);
+  vec2 size = vec2(texture_level_at(m.texture.x).info.yz);
   vec3 r = p - plane.point.xyz;
   vec3 dpdu = t * (size.x * delta), dpdv = b * (size.y * delta);
   return MicrosurfaceFootprint((vec2(dot(r, t), dot(r, b)) + plane.uv_half_size.zw) / delta, size,
@@ -202,7 +202,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
   // along the view's azimuth, a spread of standard deviation sigma_h cot(theta_v) (sigma_h of the whole
   // field: the coarsest moment level); the box of that spread, sqrt(12) sigma_h cot(theta_v) long, is
   // added to the footprint axis closer to the view's azimuth. Zero straight down, large at grazing views.
-  vec4 field = texels[texture_levels[m.texture.x + m.texture.y].info.x];
+  vec4 field = texel_at(texture_level_at(m.texture.x + m.texture.y).info.x);
   vec2 parallax = traced ? vec2(0.0) : sqrt(12.0) * sqrt(max(field.y - field.x * field.x, 0.0)) * (v.xy / v.z) / (size * delta);
   float along_x = abs(dot(duv_dx, parallax)) * length(duv_dy), along_y = abs(dot(duv_dy, parallax)) * length(duv_dx);
   if (along_x >= along_y)

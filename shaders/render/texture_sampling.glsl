@@ -23,14 +23,14 @@ struct TexelQuad {
 };
 
 TexelQuad texel_quad(uint level, vec2 uv) {
-  uvec4 info = texture_levels[level].info;
-  uvec2 size0 = info.w == 0u ? info.yz : texture_levels[level - info.w].info.yz;
+  uvec4 info = texture_level_at(level).info;
+  uvec2 size0 = info.w == 0u ? info.yz : texture_level_at(level - info.w).info.yz;
   int span = 1 << info.w;
   MipAxisTaps x = mip_axis_taps(uv.x, int(size0.x), span, int(info.y));
   MipAxisTaps y = mip_axis_taps(uv.y, int(size0.y), span, int(info.z));
   uint row0 = info.x + uint(y.i0) * info.y, row1 = info.x + uint(y.i1) * info.y;
-  return TexelQuad(texels[row0 + uint(x.i0)], texels[row0 + uint(x.i1)], texels[row1 + uint(x.i0)],
-                   texels[row1 + uint(x.i1)], vec2(x.w1, y.w1));
+  return TexelQuad(texel_at(row0 + uint(x.i0)), texel_at(row0 + uint(x.i1)), texel_at(row1 + uint(x.i0)),
+                   texel_at(row1 + uint(x.i1)), vec2(x.w1, y.w1));
 }
 
 vec4 bilinear(TexelQuad q) { return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t11, q.f.x), q.f.y); }
@@ -52,16 +52,16 @@ float colormap_position(GpuColormap map, float value) {
 vec3 colormap_at(GpuColormap map, float value) {
   float t = colormap_position(map, value);
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
-  if (!(t > colormap_points[first].w)) return colormap_points[first].rgb;  // NaN takes the first colour
-  if (t >= colormap_points[last].w) return colormap_points[last].rgb;
+  if (!(t > colormap_point(first).w)) return colormap_point(first).rgb;  // NaN takes the first colour
+  if (t >= colormap_point(last).w) return colormap_point(last).rgb;
   // Bisection for the segment with points[i].w <= t < points[i + 1].w: log2(count) reads (the
   // microsurface pass looks up 256-point maps at 16-32 nodes per pixel).
   uint i = first, j = last;
   while (j - i > 1u) {
     uint mid = (i + j) / 2u;
-    if (colormap_points[mid].w <= t) i = mid; else j = mid;
+    if (colormap_point(mid).w <= t) i = mid; else j = mid;
   }
-  vec4 a = colormap_points[i], b = colormap_points[j];
+  vec4 a = colormap_point(i), b = colormap_point(j);
   return map.info.z == 1u ? a.rgb : mix(a.rgb, b.rgb, (t - a.w) / (b.w - a.w));
 }
 
@@ -78,7 +78,7 @@ uint colormap_first_point_above(uint first, uint last, float position) {
   uint lo = first, hi = last;  // the answer lies in [lo, hi]; hi = last when no point is above
   while (lo < hi) {
     uint mid = (lo + hi) / 2u;
-    if (colormap_points[mid].w > position) hi = mid; else lo = mid + 1u;
+    if (colormap_point(mid).w > position) hi = mid; else lo = mid + 1u;
   }
   return lo;
 }
@@ -96,12 +96,12 @@ vec3 colormap_filtered(GpuColormap map, float mu, float sigma) {
   uint begin = colormap_first_point_above(first, last, m - reach);
   begin = begin > first ? begin - 1u : first;
   uint end = colormap_first_point_above(begin, last, m + reach);
-  vec4 a = colormap_points[begin];
+  vec4 a = colormap_point(begin);
   float za = colormap_standardize(a.w, m, s);
   ColormapKnot knot_a = colormap_knot_or_saturated(za);
   vec3 sum = a.rgb * knot_a.Phi;
   for (uint i = begin; i < end; ++i) {
-    vec4 b = colormap_points[i + 1u];
+    vec4 b = colormap_point(i + 1u);
     float zb = colormap_standardize(b.w, m, s);
     ColormapKnot knot_b = colormap_knot_or_saturated(zb);
     sum += colormap_segment_from_knots(knot_a, knot_b, za, zb, a.rgb, map.info.z == 1u ? a.rgb : b.rgb);
@@ -120,7 +120,7 @@ vec3 colormap_table_lookup(GpuColormap map, float mu, float sigma) {
   ColormapTableTaps taps = colormap_table_taps(grid, mu, sigma);
   uint i00 = map.table.x + uint(colormap_table_index(grid, taps.i0, taps.j0));
   uint i01 = i00 + uint(grid.mu_count);
-  return colormap_table_blend(texels[i00].rgb, texels[i00 + 1u].rgb, texels[i01].rgb, texels[i01 + 1u].rgb, taps);
+  return colormap_table_blend(texel_at(i00).rgb, texel_at(i00 + 1u).rgb, texel_at(i01).rgb, texel_at(i01 + 1u).rgb, taps);
 }
 
 // E[colormap(t)], t ~ N(mu, sigma^2): the table for `filtered:table` (above a step map's sigma floor,
@@ -160,9 +160,9 @@ vec2 footprint_moments(uint first, uint count, vec2 uv, float lod, vec2 axis_a, 
 // the taps of the anisotropic footprint with uv axes duv_dx, duv_dy (unused by naive). Moments of
 // the taps combine exactly (a mixture's E[t] and E[t^2] are the means of the taps').
 vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy) {
-  GpuColormap map = colormaps[m.texture.w];
+  GpuColormap map = colormap_record(m.texture.w);
   if (kTextureMethod == 0u) return colormap_at(map, sample_level(m.texture.x, uv).x);
-  uvec4 level0 = texture_levels[m.texture.x].info;
+  uvec4 level0 = texture_level_at(m.texture.x).info;
   AnisotropicFootprint f =
       anisotropic_footprint(duv_dx, duv_dy, vec2(level0.yz), float(m.texture.y), kMaxAnisotropicTaps);
   vec3 colour = vec3(0.0);

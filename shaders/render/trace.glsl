@@ -32,16 +32,17 @@ struct Hit {
 
 #ifdef FACET_HEIGHT_FIELDS
 bool is_height_field(GpuPlane plane, bool fields) {
-  return kHasMicrosurface && fields && materials[plane.material.x].kind.x == FACET_MATERIAL_MICROSURFACE;
+  return kHasMicrosurface && fields && material_at(plane.material.x).kind.x == FACET_MATERIAL_MICROSURFACE;
 }
 
 // The first hit (any hit) of o + t d, t in (0, t_max), with the height field of microsurface plane i
 // smoothed to level lambda (0: the field), or -1.
 float trace_height_field(uint i, vec3 o, vec3 d, float t_max, bool any_hit, float lambda, out vec2 q) {
-  GpuMaterial m = materials[planes[i].material.x];
-  HeightFieldRay r = heightfield_ray(m, planes[i], o, d, t_max);
-  float t = heightfield_search(heightfield_of(m, planes[i], lambda), r, any_hit);
-  q = clamp(r.o.xy + t * r.d.xy, vec2(0.0), 2.0 * planes[i].uv_half_size.zw / m.albedo.w);
+  GpuPlane plane = plane_at(i);
+  GpuMaterial m = material_at(plane.material.x);
+  HeightFieldRay r = heightfield_ray(m, plane, o, d, t_max);
+  float t = heightfield_search(heightfield_of(m, plane, lambda), r, any_hit);
+  q = clamp(r.o.xy + t * r.d.xy, vec2(0.0), 2.0 * plane.uv_half_size.zw / m.albedo.w);
   return t;
 }
 #endif
@@ -55,11 +56,11 @@ Hit trace_triangles(vec3 o, vec3 d, Hit hit, bool any_hit) {
   int top = 0;
   stack[top++] = 0u;
   while (top > 0) {
-    GpuBvhNode node = nodes[stack[--top]];
+    GpuBvhNode node = node_at(stack[--top]);
     if (intersect_box(o, inv_d, node.lo, node.hi, hit.t) < 0.0) continue;
     if (node.count > 0u) {
       for (uint i = node.left_or_first; i < node.left_or_first + node.count; ++i) {
-        GpuTriangle tri = triangles[i];
+        GpuTriangle tri = triangle_at(i);
         vec3 tb = intersect_triangle(o, d, tri.p0.xyz, tri.p1.xyz, tri.p2.xyz, 0.0, hit.t);
         if (tb.x < 0.0) continue;
         vec3 n = (1.0 - tb.y - tb.z) * tri.n0.xyz + tb.y * tri.n1.xyz + tb.z * tri.n2.xyz;
@@ -87,29 +88,30 @@ bool inside_plane_rectangle(GpuPlane plane, vec3 p) {
 Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, vec3 d_dx, vec3 d_dy) {
   Hit hit = Hit(t_max, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0));
   for (uint i = 0u; i < globals.counts.x; ++i) {
+    GpuPlane plane = plane_at(i);
 #ifdef FACET_HEIGHT_FIELDS
-    if (is_height_field(planes[i], fields)) {
+    if (is_height_field(plane, fields)) {
       vec2 q;
-      float lambda = smoothed ? microsurface_trace_level(materials[planes[i].material.x], planes[i], o, d, d_dx, d_dy) : 0.0;
+      GpuMaterial m = material_at(plane.material.x);
+      float lambda = smoothed ? microsurface_trace_level(m, plane, o, d, d_dx, d_dy) : 0.0;
       float t = trace_height_field(i, o, d, hit.t, false, lambda, q);
       if (t > t_min) {
-        GpuMaterial m = materials[planes[i].material.x];
         vec3 s = heightfield_point(m.texture.x, q, m.albedo.w);
-        vec3 normal = planes[i].normal.xyz - s.y * planes[i].tangent.xyz -
-                      s.z * cross(planes[i].normal.xyz, planes[i].tangent.xyz);
-        hit = Hit(t, normal, planes[i].material.x, kHeightField, i, q);
+        vec3 normal = plane.normal.xyz - s.y * plane.tangent.xyz - s.z * cross(plane.normal.xyz, plane.tangent.xyz);
+        hit = Hit(t, normal, plane.material.x, kHeightField, i, q);
       }
       continue;
     }
 #endif
-    float t = intersect_plane(o, d, planes[i].point.xyz, planes[i].normal.xyz, t_min, hit.t);
-    if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * d))
-      hit = Hit(t, planes[i].normal.xyz, planes[i].material.x, kPlane, i, vec2(0.0));
+    float t = intersect_plane(o, d, plane.point.xyz, plane.normal.xyz, t_min, hit.t);
+    if (t > 0.0 && inside_plane_rectangle(plane, o + t * d))
+      hit = Hit(t, plane.normal.xyz, plane.material.x, kPlane, i, vec2(0.0));
   }
   for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
-    vec4 s = spheres[i].center_radius;
+    GpuSphere sphere = sphere_at(i);
+    vec4 s = sphere.center_radius;
     float t = intersect_sphere(o, d, s.xyz, s.w, t_min, hit.t);
-    if (t > 0.0) hit = Hit(t, o + t * d - s.xyz, spheres[i].material.x, kSphere, i, vec2(0.0));
+    if (t > 0.0) hit = Hit(t, o + t * d - s.xyz, sphere.material.x, kSphere, i, vec2(0.0));
   }
   return trace_triangles(o, d, hit, false);
 }
@@ -124,19 +126,20 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields) {
   uint skip_plane = from.primitive == kPlane ? from.index : kNoHit;
   uint skip_sphere = from.primitive == kSphere && dot(from.normal, n) > 0.0 ? from.index : kNoHit;
   for (uint i = 0u; i < globals.counts.x; ++i) {
+    GpuPlane plane = plane_at(i);
 #ifdef FACET_HEIGHT_FIELDS
-    if (is_height_field(planes[i], fields)) {  // a field shadows itself: never skipped
+    if (is_height_field(plane, fields)) {  // a field shadows itself: never skipped
       vec2 q;
       if (trace_height_field(i, o, l, kInfinity, true, 0.0, q) > 0.0) return true;
       continue;
     }
 #endif
     if (i == skip_plane) continue;
-    float t = intersect_plane(o, l, planes[i].point.xyz, planes[i].normal.xyz, 0.0, kInfinity);
-    if (t > 0.0 && inside_plane_rectangle(planes[i], o + t * l)) return true;
+    float t = intersect_plane(o, l, plane.point.xyz, plane.normal.xyz, 0.0, kInfinity);
+    if (t > 0.0 && inside_plane_rectangle(plane, o + t * l)) return true;
   }
   for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
-    vec4 s = spheres[i].center_radius;
+    vec4 s = sphere_at(i).center_radius;
     if (i != skip_sphere && intersect_sphere(o, l, s.xyz, s.w, 0.0, kInfinity) > 0.0) return true;
   }
   return trace_triangles(o, l, Hit(kInfinity, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0)), true).material != kNoHit;
@@ -151,16 +154,17 @@ struct SurfaceUv {
 
 SurfaceUv surface_uv(Hit hit, vec3 p) {
   if (hit.primitive == kPlane) {
-    GpuPlane plane = planes[hit.index];
+    GpuPlane plane = plane_at(hit.index);
     vec3 bitangent = cross(plane.normal.xyz, plane.tangent.xyz);
     vec3 r = p - plane.point.xyz;
     vec2 scale = plane.uv_half_size.xy;
     return SurfaceUv(vec2(dot(r, plane.tangent.xyz), dot(r, bitangent)) * scale, plane.tangent.xyz / scale.x,
                      bitangent / scale.y);
   }
-  if (hit.primitive == kSphere) {
+  // lavapipe runs every branch for every pixel: absent primitive kinds are compiled out here too.
+  if (kHasSpheres && hit.primitive == kSphere) {
     // u: longitude about +y from +z, v: polar angle from +y (both in [0, 1]).
-    vec4 s = spheres[hit.index].center_radius;
+    vec4 s = sphere_at(hit.index).center_radius;
     vec3 n = normalize(p - s.xyz);
     float phi = atan(n.x, n.z);
     float theta = acos(clamp(n.y, -1.0, 1.0));
@@ -168,7 +172,8 @@ SurfaceUv surface_uv(Hit hit, vec3 p) {
     vec3 dpdv = FACET_PI * s.w * vec3(cos(theta) * sin(phi), -sin(theta), cos(theta) * cos(phi));
     return SurfaceUv(vec2(0.5 + phi * (0.5 * FACET_INV_PI), theta * FACET_INV_PI), dpdu, dpdv);
   }
-  GpuTriangle tri = triangles[hit.index];
+  if (!kHasTriangles) return SurfaceUv(vec2(0.0), vec3(0.0), vec3(0.0));  // not reached: hits are planes or spheres
+  GpuTriangle tri = triangle_at(hit.index);
   vec2 b = hit.barycentric;
   vec2 uv0 = tri.uv01.xy, uv1 = tri.uv01.zw, uv2 = tri.uv2.xy;
   vec2 uv = (1.0 - b.x - b.y) * uv0 + b.x * uv1 + b.y * uv2;

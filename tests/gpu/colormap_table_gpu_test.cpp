@@ -54,7 +54,8 @@ class GaussianProbe {
                                   .buffer_count = static_cast<uint32_t>(bindings.size()),
                                   .push_constant_bytes = sizeof(gpu::GpuTile),
                                   .image_count = 0,
-                                  .specialization = {{FACET_RENDER_SPEC_TEXTURE_METHOD, method}}});
+                                  .specialization = {{FACET_RENDER_SPEC_TEXTURE_METHOD, method}},
+                                  .buffer_kinds = gpu::SceneBuffers::binding_kinds()});
     const gpu::GpuTile tile{};
     kernel.dispatch(bindings, &tile, {static_cast<uint32_t>((probes.size() + 63) / 64), 1, 1});
     records.download(probes.data(), probes.size() * sizeof(vec4));

@@ -18,5 +18,5 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= uint(probes.length())) return;
   vec4 q = probes[i];
-  probes[i] = vec4(colormap_gaussian(colormaps[uint(q.z)], q.x, q.y), 0.0);
+  probes[i] = vec4(colormap_gaussian(colormap_record(uint(q.z)), q.x, q.y), 0.0);
 }
