@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
+#include "common/counted.hpp"
 #include "common/error.hpp"
 #include "common/phase_timings.hpp"
 #include "common/progress.hpp"
@@ -77,7 +78,7 @@ int run_render(const RenderOptions& options) {
   frames::add_phase_timings(frame.metadata, phases);
   timed(&phases, "write", [&] { frames::write_frame(options.output, frame.image, frame.metadata); });
   std::cerr << "facet: rendered " << width << "x" << height << " in " << frame.wall_ms << " ms (GPU " << frame.gpu_ms
-            << " ms in " << gpu::tile_count(width, height) << " tiles) on " << context.info().name << " -> "
+            << " ms in " << counted(gpu::tile_count(width, height), "tile") << ") on " << context.info().name << " -> "
             << options.output.path.string() << "\n";
   if (options.timings) print_timings(phases, frame.gpu_ms);
   return 0;

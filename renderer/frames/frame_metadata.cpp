@@ -13,8 +13,8 @@ ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::i
           {"facet:version", std::string(FACET_VERSION)}};
 }
 
-void add_timings(ExrMetadata& metadata, double gpu_ms, double wall_ms) {
-  metadata["facet:gpu_ms"] = gpu_ms;
+void add_timings(ExrMetadata& metadata, std::optional<double> gpu_ms, double wall_ms) {
+  if (gpu_ms) metadata["facet:gpu_ms"] = *gpu_ms;
   metadata["facet:render_ms"] = wall_ms;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "common/phase_timings.hpp"
@@ -17,8 +18,8 @@ namespace facet::frames {
 ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::int64_t samples_per_pixel,
                            const std::string& device);
 
-// facet:gpu_ms and facet:render_ms.
-void add_timings(ExrMetadata& metadata, double gpu_ms, double wall_ms);
+// facet:render_ms, and facet:gpu_ms when the frame had device time (none for the CPU reference).
+void add_timings(ExrMetadata& metadata, std::optional<double> gpu_ms, double wall_ms);
 
 // facet:phase:<name>_ms for every phase (load, upload, ..., render): where the wall clock went.
 void add_phase_timings(ExrMetadata& metadata, const PhaseTimings& phases);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "common/counted.hpp"
 #include "common/error.hpp"
 #include "cpu/reference_renderer.hpp"
 #include "frames/frame_metadata.hpp"
@@ -42,7 +43,7 @@ Frame PreparedFrames::render(const Camera& camera, int width, int height, const 
                       : render_reference(camera, width, height, request);
   frame.wall_ms = ms_since(start);
   frame.metadata = metadata();
-  if (request.timings) add_timings(frame.metadata, frame.gpu_ms, frame.wall_ms);
+  if (request.timings) add_timings(frame.metadata, pass_ ? std::optional(frame.gpu_ms) : std::nullopt, frame.wall_ms);
   add_frame_number(frame.metadata, request.frame);
   return frame;
 }
@@ -55,8 +56,7 @@ Image PreparedFrames::render_gpu(const Camera& camera, int width, int height, co
   Image image = pass_->render(camera, width, height, &stats, progress);
   const std::uint32_t messages = context_->validation_message_count() - validation_messages_;
   validation_messages_ = context_->validation_message_count();
-  if (messages > 0)
-    throw Error("Vulkan validation reported " + std::to_string(messages) + " messages; no image written");
+  if (messages > 0) throw Error("Vulkan validation reported " + counted(messages, "message") + "; no image written");
   gpu_ms = stats.gpu_ms;
   return image;
 }

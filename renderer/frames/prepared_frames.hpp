@@ -35,7 +35,7 @@ struct FrameRequest {
 struct Frame {
   Image image;
   ExrMetadata metadata;
-  double gpu_ms = 0.0;   // the device time; 0 for the CPU reference
+  double gpu_ms = 0.0;   // the device time; 0 for the CPU reference, whose file has no facet:gpu_ms
   double wall_ms = 0.0;  // since FrameRequest::since
 };
 
