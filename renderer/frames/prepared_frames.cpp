@@ -43,6 +43,7 @@ Frame PreparedFrames::render(const Camera& camera, int width, int height, const 
                       : render_reference(camera, width, height, request);
   frame.wall_ms = ms_since(start);
   frame.metadata = metadata();
+  add_standard_attributes(frame.metadata, camera, width, height, samples_per_pixel());
   if (request.timings) add_timings(frame.metadata, pass_ ? std::optional(frame.gpu_ms) : std::nullopt, frame.wall_ms);
   add_frame_number(frame.metadata, request.frame);
   return frame;
@@ -76,16 +77,21 @@ Image PreparedFrames::render_reference(const Camera& camera, int width, int heig
   return cpu::render_reference(framed, options);
 }
 
+std::int64_t PreparedFrames::samples_per_pixel() const {
+  if (const auto* method = std::get_if<gpu::RenderMethod>(&method_))
+    return method->samples_per_axis * method->samples_per_axis;
+  const auto& reference = std::get<ReferenceMethod>(method_);
+  return static_cast<std::int64_t>(reference.grid) * reference.grid;
+}
+
 ExrMetadata PreparedFrames::metadata() const {
   if (const auto* method = std::get_if<gpu::RenderMethod>(&method_)) {
-    ExrMetadata metadata = frame_metadata(*scene_, method->name(), method->samples_per_axis * method->samples_per_axis,
-                                          context_->info().name);
+    ExrMetadata metadata = frame_metadata(*scene_, method->name(), samples_per_pixel(), context_->info().name);
     add_diffraction_metadata(metadata, pass_->diffraction());
     return metadata;
   }
   const auto& reference = std::get<ReferenceMethod>(method_);
-  ExrMetadata metadata =
-      frame_metadata(*scene_, "reference", static_cast<std::int64_t>(reference.grid) * reference.grid, "cpu");
+  ExrMetadata metadata = frame_metadata(*scene_, "reference", samples_per_pixel(), "cpu");
   add_reference_metadata(metadata, reference);
   return metadata;
 }
