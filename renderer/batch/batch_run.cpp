@@ -16,6 +16,7 @@
 #include "batch/items.hpp"
 #include "batch/job.hpp"
 #include "batch/manifest.hpp"
+#include "common/counted.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 #include "common/progress.hpp"
@@ -72,8 +73,8 @@ int merge_shards(const fs::path& manifest_path) {
   Manifest merged = read_manifest(manifest_path);
   for (const fs::path& shard : shards) merge_manifest(merged, read_manifest(shard));
   write_manifest(manifest_path, merged);
-  std::cerr << "facet: merged " << shards.size() << " shard manifests into " << manifest_path.string() << " ("
-            << merged.size() << " outputs)\n";
+  std::cerr << "facet: merged " << counted(std::ssize(shards), "shard manifest") << " into " << manifest_path.string()
+            << " (" << counted(std::ssize(merged), "output") << ")\n";
   return 0;
 }
 
@@ -251,7 +252,7 @@ int run_batch(const BatchOptions& options) {
   render_pending(job, root, scenes, plan, device, stop_requested);
 
   std::cerr << "facet: batch " << job.file.string() << (shard.whole() ? "" : " shard " + options.shard) << ": "
-            << plan.items.size() << " items in the job\n";
+            << counted(std::ssize(plan.items), "item") << " in the job\n";
   print_summary(plan.rows, seconds_since(start));
   int failed = 0, unfinished = 0;
   for (const SummaryRow& row : plan.rows) {
@@ -259,9 +260,9 @@ int run_batch(const BatchOptions& options) {
     unfinished += row.unfinished;
   }
   if (stop_requested)
-    throw Error("interrupted: " + std::to_string(unfinished) + " items unfinished, every finished one is in " +
+    throw Error("interrupted: " + counted(unfinished, "item") + " unfinished, every finished one is in " +
                 plan.manifest_path.string() + "; run again to continue");
-  if (failed > 0) throw Error(std::to_string(failed) + " items failed (listed above); the others are done");
+  if (failed > 0) throw Error(counted(failed, "item") + " failed (listed above); the others are done");
   return 0;
 }
 

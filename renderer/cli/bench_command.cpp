@@ -3,9 +3,13 @@
 // index.html, thumbnails, heat maps and speed-vs-error plots (docs/report.md).
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "common/error.hpp"
 #include "report/bench_run.hpp"
+#include "report/method_catalogue.hpp"
 #include "report/report_files.hpp"
 
 namespace facet::cli {
@@ -32,8 +36,24 @@ std::vector<std::string> split_list(const std::string& text) {
   return items;
 }
 
+// Every name of --methods must render, checked before the first (slow) reference does.
+void check_methods(const std::vector<std::string>& names) {
+  for (const report::CatalogueEntry& entry : report::select_methods({}, false, names)) {
+    try {
+      entry.render_method();
+    } catch (const Error&) {
+      std::string known;
+      for (const report::CatalogueEntry& row : report::method_catalogue())
+        known += (known.empty() ? "" : ", ") + row.name;
+      throw Error("--methods: unknown method '" + entry.name + "' (known: " + known +
+                  ", or any facet render --method)");
+    }
+  }
+}
+
 int run_bench_command(BenchCommandOptions options) {
   options.bench.methods = split_list(options.methods);
+  check_methods(options.bench.methods);
   options.bench.seed = static_cast<std::uint64_t>(options.seed);
   options.bench.kernel_stability = !options.no_stability;
   options.bench.facet_version = FACET_VERSION;

@@ -1,5 +1,6 @@
 #include "cli/eval_command.hpp"
 
+#include "common/counted.hpp"
 #include "common/error.hpp"
 
 namespace facet::cli {
@@ -18,7 +19,7 @@ std::vector<gpu::EvalRecord> run_gpu_eval(const EvalOptions& options, const char
   vk::Context context({options.vulkan.device, options.vulkan.validation});
   auto outputs = gpu::run_batch_eval(context, name, spirv, inputs);
   if (context.validation_message_count() > 0)
-    throw Error("Vulkan validation reported " + std::to_string(context.validation_message_count()) + " messages");
+    throw Error("Vulkan validation reported " + counted(context.validation_message_count(), "message"));
   return outputs;
 }
 

@@ -12,6 +12,7 @@
 
 #include "cli/eval_command.hpp"
 #include "cli/json_lines.hpp"
+#include "common/counted.hpp"
 #include "diffraction/exact_transform.hpp"
 #include "gpu/diffraction_eval.hpp"
 #include "scene/grating/grating.hpp"
@@ -71,7 +72,7 @@ std::vector<nlohmann::json> evaluate(const DiffractionOptions& options, const di
     vk::Context context({options.eval.vulkan.device, options.eval.vulkan.validation});
     results = gpu::evaluate_diffraction(context, tables, qs);
     if (context.validation_message_count() > 0)
-      throw Error("Vulkan validation reported " + std::to_string(context.validation_message_count()) + " messages");
+      throw Error("Vulkan validation reported " + counted(context.validation_message_count(), "message"));
   } else if (options.exact) {
     const diffraction::ExactTransform exact(grating, tables);
     for (const auto& q : qs) results.push_back(exact.evaluate(q));

@@ -7,6 +7,7 @@
 #include "assets/gaussian_heightfield.hpp"
 #include "cli/commands.hpp"
 #include "cli/output_extension.hpp"
+#include "common/counted.hpp"
 
 namespace facet::cli {
 
@@ -41,8 +42,8 @@ int run_noise(assets::FbmParams params, const GridSize& grid, const std::filesys
   std::tie(params.width, params.height) = grid.resolve();
   assets::FbmTexture texture = assets::generate_fbm_noise(params);
   assets::write_scalar_field_exr(output, texture.field, assets::noise_metadata(params, texture));
-  std::cerr << "facet: fBm noise " << params.width << "x" << params.height << ", " << params.octaves << " octaves -> "
-            << output.string() << "\n";
+  std::cerr << "facet: fBm noise " << params.width << "x" << params.height << ", " << counted(params.octaves, "octave")
+            << " -> " << output.string() << "\n";
   return 0;
 }
 

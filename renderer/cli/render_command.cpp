@@ -3,9 +3,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
+#include "cli/idle_options.hpp"
+#include "common/counted.hpp"
 #include "common/error.hpp"
 #include "common/phase_timings.hpp"
 #include "common/progress.hpp"
@@ -44,6 +48,16 @@ gpu::RenderMethod render_method(const RenderOptions& options) {
   return method;
 }
 
+// The diffraction options as the user gave them ("--wavelengths 16"), for idle_option_warnings().
+std::vector<std::string> given_diffraction_options(const RenderOptions& options) {
+  std::vector<std::string> given;
+  if (options.method.starts_with("diffraction:")) given.push_back("--method " + options.method);
+  if (!options.diffraction.empty()) given.push_back("--diffraction " + options.diffraction);
+  if (options.wavelengths > 0) given.push_back("--wavelengths " + std::to_string(options.wavelengths));
+  if (options.taylor > 0) given.push_back("--taylor " + std::to_string(options.taylor));
+  return given;
+}
+
 // One line per phase on stderr, then the total: where the wall clock of `facet render` went.
 void print_timings(const PhaseTimings& phases, double gpu_ms) {
   std::cerr << "facet: timings (wall ms):\n";
@@ -62,6 +76,8 @@ int run_render(const RenderOptions& options) {
   options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
   const gpu::RenderMethod method = render_method(options);
+  for (const std::string& warning : idle_option_warnings(scene, method, given_diffraction_options(options)))
+    std::cerr << warning << "\n";
   vk::Context context = timed(&phases, "device", [&] {
     return vk::Context({options.device.device, options.device.validation});
   });
@@ -77,7 +93,7 @@ int run_render(const RenderOptions& options) {
   frames::add_phase_timings(frame.metadata, phases);
   timed(&phases, "write", [&] { frames::write_frame(options.output, frame.image, frame.metadata); });
   std::cerr << "facet: rendered " << width << "x" << height << " in " << frame.wall_ms << " ms (GPU " << frame.gpu_ms
-            << " ms in " << gpu::tile_count(width, height) << " tiles) on " << context.info().name << " -> "
+            << " ms in " << counted(gpu::tile_count(width, height), "tile") << ") on " << context.info().name << " -> "
             << options.output.path.string() << "\n";
   if (options.timings) print_timings(phases, frame.gpu_ms);
   return 0;

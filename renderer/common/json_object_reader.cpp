@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/error.hpp"
+#include "common/nearest_name.hpp"
 
 namespace facet {
 
@@ -55,8 +56,31 @@ const nlohmann::json* JsonObjectReader::optional(const std::string& key) {
 
 const nlohmann::json* JsonObjectReader::required(const std::string& key) {
   const nlohmann::json* v = optional(key);
-  if (v == nullptr) throw Error(file_ + ": " + key_path(key) + " is required but missing");
-  return v;
+  if (v != nullptr) return v;
+  // "raduis" in place of "radius" is the typo, not a missing key: name it as finish() would.
+  for (const std::string& given : unknown_keys())
+    if (nearest(given, {key}) == key) throw unknown_key(given, key, "");
+  throw Error(file_ + ": " + key_path(key) + " is required but missing");
+}
+
+std::vector<std::string> JsonObjectReader::unknown_keys() const {
+  std::vector<std::string> unknown;
+  for (const auto& item : object_.items())
+    if (known_.count(item.key()) == 0) unknown.push_back(item.key());
+  return unknown;
+}
+
+Error JsonObjectReader::unknown_key(const std::string& key, const std::string& suggestion,
+                                    const std::string& known_list) const {
+  std::vector<std::string> hints;
+  if (!suggestion.empty()) hints.push_back("did you mean \"" + suggestion + "\"?");
+  if (!known_list.empty()) hints.push_back("known keys: " + known_list);
+  // The key as JSON writes it: quoted, a newline or quote in it escaped, so the message stays one line.
+  std::string message =
+      file_ + ": unknown key " + describe_json(key) + " in " + (path_.empty() ? "the top level" : path_);
+  for (std::size_t i = 0; i < hints.size(); ++i) message += (i == 0 ? " (" : " ") + hints[i];
+  if (!hints.empty()) message += ")";
+  return Error(message);
 }
 
 const nlohmann::json& JsonObjectReader::value(const std::string& key) { return *required(key); }
@@ -130,13 +154,12 @@ glm::dvec3 JsonObjectReader::colour(const std::string& key, std::optional<glm::d
 }
 
 void JsonObjectReader::finish() const {
-  for (const auto& [key, v] : object_.items()) {
-    if (known_.count(key) != 0) continue;
-    std::string known_list;
-    for (const std::string& k : known_) known_list += (known_list.empty() ? "" : ", ") + k;
-    throw Error(file_ + ": unknown key \"" + key + "\" in " + (path_.empty() ? std::string("the top level") : path_) +
-                " (known keys: " + known_list + ")");
-  }
+  const std::vector<std::string> unknown = unknown_keys();
+  if (unknown.empty()) return;
+  std::string known_list;
+  for (const std::string& k : known_) known_list += (known_list.empty() ? "" : ", ") + k;
+  throw unknown_key(unknown.front(), nearest(unknown.front(), std::vector<std::string>(known_.begin(), known_.end())),
+                    known_list);
 }
 
 }  // namespace facet

@@ -1,16 +1,20 @@
 // Reads one JSON object of a scene file with full validation.
 //
 // Every getter records its key as known; finish() then rejects any key that was never
-// asked for, so a typo ("raduis") is an error instead of a silently used default.
+// asked for, so a typo ("raduis") is an error instead of a silently used default. A required key
+// that is missing beside a key near it is that typo too, and reported as it.
 // Errors are facet::Error with one line: "<file>: <path>.<key> must be ..., got <value>".
 #pragma once
 
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
+
+#include "common/error.hpp"
 
 namespace facet {
 
@@ -39,7 +43,8 @@ class JsonObjectReader {
   std::string key_path(const std::string& key) const;
   // Throws "<file>: <path>.<key> <what>, got <value of key>".
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
-  // Throws if the object holds a key no getter asked for.
+  // Throws if the object holds a key no getter asked for, naming it, the nearest known key and
+  // every known key.
   void finish() const;
 
   const std::string& file() const { return file_; }
@@ -48,6 +53,11 @@ class JsonObjectReader {
  private:
   const nlohmann::json* required(const std::string& key);
   const nlohmann::json* optional(const std::string& key);
+  // The keys of the object no getter has asked for yet, in the object's order.
+  std::vector<std::string> unknown_keys() const;
+  // "<file>: unknown key "<key>" in <path> (did you mean "<suggestion>"? known keys: <known_list>)",
+  // each part (and the parentheses, if both) left out when empty.
+  Error unknown_key(const std::string& key, const std::string& suggestion, const std::string& known_list) const;
 
   const nlohmann::json& object_;
   std::string file_;

@@ -1,8 +1,25 @@
 #include "frames/frame_metadata.hpp"
 
+#include "scene/camera_matrices.hpp"
 #include "scene/grating/diffraction_method.hpp"
 
 namespace facet::frames {
+
+namespace {
+
+// pbrt-v4's layout: m[row][column] of the column-vector matrix (scene/camera_matrices.hpp); glm
+// indexes [column][row].
+ExrMatrix exr_matrix(const glm::dmat4& m) {
+  ExrMatrix matrix;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) matrix[row][column] = static_cast<float>(m[column][row]);
+  return matrix;
+}
+
+// ITU-R BT.709 primaries and the D65 white point (CIE 1931 xy).
+constexpr ExrChromaticities kRec709{{0.64f, 0.33f}, {0.30f, 0.60f}, {0.15f, 0.06f}, {0.3127f, 0.3290f}};
+
+}  // namespace
 
 ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::int64_t samples_per_pixel,
                            const std::string& device) {
@@ -13,9 +30,18 @@ ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::i
           {"facet:version", std::string(FACET_VERSION)}};
 }
 
-void add_timings(ExrMetadata& metadata, double gpu_ms, double wall_ms) {
-  metadata["facet:gpu_ms"] = gpu_ms;
+void add_timings(ExrMetadata& metadata, std::optional<double> gpu_ms, double wall_ms) {
+  if (gpu_ms) metadata["facet:gpu_ms"] = *gpu_ms;
   metadata["facet:render_ms"] = wall_ms;
+  metadata["renderTimeSeconds"] = static_cast<float>(wall_ms / 1000.0);
+}
+
+void add_standard_attributes(ExrMetadata& metadata, const Camera& camera, int width, int height,
+                             std::int64_t samples_per_pixel) {
+  metadata["samplesPerPixel"] = samples_per_pixel;
+  metadata["worldToCamera"] = exr_matrix(world_to_camera(camera));
+  metadata["worldToNDC"] = exr_matrix(world_to_ndc(camera, width, height));
+  metadata["chromaticities"] = kRec709;
 }
 
 void add_phase_timings(ExrMetadata& metadata, const PhaseTimings& phases) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "common/phase_timings.hpp"
@@ -17,8 +18,15 @@ namespace facet::frames {
 ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::int64_t samples_per_pixel,
                            const std::string& device);
 
-// facet:gpu_ms and facet:render_ms.
-void add_timings(ExrMetadata& metadata, double gpu_ms, double wall_ms);
+// facet:render_ms and renderTimeSeconds (pbrt-v4's float), and facet:gpu_ms when the frame had
+// device time (none for the CPU reference).
+void add_timings(ExrMetadata& metadata, std::optional<double> gpu_ms, double wall_ms);
+
+// The standard attributes other tools read, with pbrt-v4's names and types: samplesPerPixel (int),
+// worldToCamera and worldToNDC (M44f, scene/camera_matrices.hpp) of a `width` x `height` frame of
+// `camera`, and OpenEXR's chromaticities (the Rec. 709 primaries and D65 white of facet's linear RGB).
+void add_standard_attributes(ExrMetadata& metadata, const Camera& camera, int width, int height,
+                             std::int64_t samples_per_pixel);
 
 // facet:phase:<name>_ms for every phase (load, upload, ..., render): where the wall clock went.
 void add_phase_timings(ExrMetadata& metadata, const PhaseTimings& phases);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "common/counted.hpp"
 #include "common/error.hpp"
 #include "cpu/reference_renderer.hpp"
 #include "frames/frame_metadata.hpp"
@@ -42,7 +43,8 @@ Frame PreparedFrames::render(const Camera& camera, int width, int height, const 
                       : render_reference(camera, width, height, request);
   frame.wall_ms = ms_since(start);
   frame.metadata = metadata();
-  if (request.timings) add_timings(frame.metadata, frame.gpu_ms, frame.wall_ms);
+  add_standard_attributes(frame.metadata, camera, width, height, samples_per_pixel());
+  if (request.timings) add_timings(frame.metadata, pass_ ? std::optional(frame.gpu_ms) : std::nullopt, frame.wall_ms);
   add_frame_number(frame.metadata, request.frame);
   return frame;
 }
@@ -55,8 +57,7 @@ Image PreparedFrames::render_gpu(const Camera& camera, int width, int height, co
   Image image = pass_->render(camera, width, height, &stats, progress);
   const std::uint32_t messages = context_->validation_message_count() - validation_messages_;
   validation_messages_ = context_->validation_message_count();
-  if (messages > 0)
-    throw Error("Vulkan validation reported " + std::to_string(messages) + " messages; no image written");
+  if (messages > 0) throw Error("Vulkan validation reported " + counted(messages, "message") + "; no image written");
   gpu_ms = stats.gpu_ms;
   return image;
 }
@@ -76,16 +77,21 @@ Image PreparedFrames::render_reference(const Camera& camera, int width, int heig
   return cpu::render_reference(framed, options);
 }
 
+std::int64_t PreparedFrames::samples_per_pixel() const {
+  if (const auto* method = std::get_if<gpu::RenderMethod>(&method_))
+    return method->samples_per_axis * method->samples_per_axis;
+  const auto& reference = std::get<ReferenceMethod>(method_);
+  return static_cast<std::int64_t>(reference.grid) * reference.grid;
+}
+
 ExrMetadata PreparedFrames::metadata() const {
   if (const auto* method = std::get_if<gpu::RenderMethod>(&method_)) {
-    ExrMetadata metadata = frame_metadata(*scene_, method->name(), method->samples_per_axis * method->samples_per_axis,
-                                          context_->info().name);
+    ExrMetadata metadata = frame_metadata(*scene_, method->name(), samples_per_pixel(), context_->info().name);
     add_diffraction_metadata(metadata, pass_->diffraction());
     return metadata;
   }
   const auto& reference = std::get<ReferenceMethod>(method_);
-  ExrMetadata metadata =
-      frame_metadata(*scene_, "reference", static_cast<std::int64_t>(reference.grid) * reference.grid, "cpu");
+  ExrMetadata metadata = frame_metadata(*scene_, "reference", samples_per_pixel(), "cpu");
   add_reference_metadata(metadata, reference);
   return metadata;
 }

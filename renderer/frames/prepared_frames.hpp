@@ -35,7 +35,7 @@ struct FrameRequest {
 struct Frame {
   Image image;
   ExrMetadata metadata;
-  double gpu_ms = 0.0;   // the device time; 0 for the CPU reference
+  double gpu_ms = 0.0;   // the device time; 0 for the CPU reference, whose file has no facet:gpu_ms
   double wall_ms = 0.0;  // since FrameRequest::since
 };
 
@@ -59,7 +59,8 @@ class PreparedFrames {
  private:
   Image render_gpu(const Camera& camera, int width, int height, const FrameRequest& request, double& gpu_ms);
   Image render_reference(const Camera& camera, int width, int height, const FrameRequest& request) const;
-  ExrMetadata metadata() const;
+  ExrMetadata metadata() const;  // the facet:* attributes of the method
+  std::int64_t samples_per_pixel() const;
 
   const Scene* scene_;
   FrameMethod method_;

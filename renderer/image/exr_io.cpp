@@ -2,6 +2,7 @@
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfChromaticitiesAttribute.h>
 #include <OpenEXR/ImfDoubleAttribute.h>
 #include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -9,6 +10,7 @@
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTestFile.h>
@@ -66,12 +68,31 @@ void check_writable(const Image& image, ExrPixelType type, NonFinite non_finite)
   }
 }
 
+Imath::V2f xy(const std::array<float, 2>& c) { return {c[0], c[1]}; }
+std::array<float, 2> xy(const Imath::V2f& c) { return {c.x, c.y}; }
+
+// Between ExrMatrix and Imath::M44f, element by element: both index [row][column].
+template <typename To, typename From>
+To copy_4x4(const From& m) {
+  To matrix;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) matrix[row][column] = m[row][column];
+  return matrix;
+}
+
 void insert_metadata(Imf::Header& header, const ExrMetadata& metadata) {
   for (const auto& [name, value] : metadata) {
     if (const auto* text = std::get_if<std::string>(&value)) {
       header.insert(name, Imf::StringAttribute(*text));
     } else if (const auto* real = std::get_if<double>(&value)) {
       header.insert(name, Imf::DoubleAttribute(*real));
+    } else if (const auto* single = std::get_if<float>(&value)) {
+      header.insert(name, Imf::FloatAttribute(*single));
+    } else if (const auto* m = std::get_if<ExrMatrix>(&value)) {
+      header.insert(name, Imf::M44fAttribute(copy_4x4<Imath::M44f>(*m)));
+    } else if (const auto* c = std::get_if<ExrChromaticities>(&value)) {
+      header.insert(
+          name, Imf::ChromaticitiesAttribute(Imf::Chromaticities(xy(c->red), xy(c->green), xy(c->blue), xy(c->white))));
     } else {
       const std::int64_t integer = std::get<std::int64_t>(value);
       if (integer < std::numeric_limits<int>::min() || integer > std::numeric_limits<int>::max())
@@ -103,6 +124,11 @@ ExrMetadata extract_metadata(const Imf::Header& header) {
       metadata[name] = static_cast<double>(single->value());
     else if (const auto* integer = dynamic_cast<const Imf::IntAttribute*>(&attribute))
       metadata[name] = static_cast<std::int64_t>(integer->value());
+    else if (const auto* matrix = dynamic_cast<const Imf::M44fAttribute*>(&attribute))
+      metadata[name] = copy_4x4<ExrMatrix>(matrix->value());
+    else if (const auto* c = dynamic_cast<const Imf::ChromaticitiesAttribute*>(&attribute))
+      metadata[name] =
+          ExrChromaticities{xy(c->value().red), xy(c->value().green), xy(c->value().blue), xy(c->value().white)};
   }
   return metadata;
 }

@@ -1,6 +1,7 @@
 // OpenEXR files: scene-linear RGB frames with facet's metadata, and scalar texture channels.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -11,9 +12,19 @@
 
 namespace facet {
 
-// Custom header attributes ("facet:scene", "facet:spp", ...), written as EXR String, Double and Int
-// attributes. EXR ints are 32-bit: an int64_t outside that range is an error, not a silent wrap.
-using ExrMetadataValue = std::variant<std::string, double, std::int64_t>;
+// A 4x4 matrix as EXR's M44f attribute holds it: m[row][column].
+using ExrMatrix = std::array<std::array<float, 4>, 4>;
+
+// CIE 1931 xy of the R, G, B primaries and of the white point: EXR's chromaticities attribute.
+struct ExrChromaticities {
+  std::array<float, 2> red, green, blue, white;
+  bool operator==(const ExrChromaticities&) const = default;
+};
+
+// Header attributes ("facet:scene", "facet:spp", "worldToCamera", ...), written as EXR String, Double,
+// Int, Float, M44f and Chromaticities attributes. EXR ints are 32-bit: an int64_t outside that range is
+// an error, not a silent wrap.
+using ExrMetadataValue = std::variant<std::string, double, std::int64_t, float, ExrMatrix, ExrChromaticities>;
 using ExrMetadata = std::map<std::string, ExrMetadataValue>;
 
 enum class ExrPixelType { Half, Float };
@@ -27,8 +38,9 @@ void write_exr(const std::filesystem::path& path, const Image& image, const ExrM
                NonFinite non_finite = NonFinite::Reject);
 
 // Reads R, G, B (A is ignored) or, for a luminance-only file, Y as grey; half or float. The image
-// covers the data window. If `metadata` is given it receives the String, Double, Int and Float
-// attributes other than the ones every EXR header must have.
+// covers the data window. If `metadata` is given it receives the String, Double, Int, Float (as double:
+// callers read times as double whatever the writer chose), M44f and Chromaticities attributes other
+// than the ones every EXR header must have.
 Image read_exr(const std::filesystem::path& path, ExrMetadata* metadata = nullptr);
 
 // Reads one channel by name (e.g. "Y", "R", "Z") as a scalar texture.

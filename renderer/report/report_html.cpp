@@ -2,6 +2,7 @@
 // map side by side with its time and errors; then the kernel-stability table.
 #include <sstream>
 
+#include "common/counted.hpp"
 #include "report/headline.hpp"
 #include "report/report_files.hpp"
 #include "report/svg_plot.hpp"
@@ -83,7 +84,8 @@ std::string report_html(const BenchRun& run) {
        << kStyle << "</style></head><body>\n<h1>facet bench report</h1>\n<p>" << xml_escape(run.machine) << "; "
        << xml_escape(run.device) << "; facet " << xml_escape(run.facet_version) << "; " << run.date << "; "
        << (run.quick ? "--quick" : "full") << " run, reference grid " << run.grid << "×" << run.grid << ", "
-       << run.repeats << " timed runs after a warm-up. Time: median device time per frame (wall time if the device "
+       << counted(run.repeats, "timed run")
+       << " after a warm-up. Time: median device time per frame (wall time if the device "
        << "has no timestamps). Heat maps: per-pixel FLIP against the reference (0 black, 1 yellow).</p>\n";
   write_headline(html, run);
   for (const SceneRun& scene : run.scenes) write_scene(html, run, scene);

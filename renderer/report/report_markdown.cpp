@@ -1,6 +1,7 @@
 // report.md: what ran where, the headline, one table per scene, the kernel-stability table.
 #include <sstream>
 
+#include "common/counted.hpp"
 #include "report/headline.hpp"
 #include "report/report_files.hpp"
 
@@ -21,8 +22,8 @@ void write_header(std::ostringstream& md, const BenchRun& run) {
   md << "# facet bench report\n\n"
      << "- machine: " << run.machine << "\n- device: " << run.device << "\n- facet " << run.facet_version << ", "
      << run.date << ", " << (run.quick ? "`--quick`" : "full") << " run: reference " << run.grid << "×" << run.grid
-     << " jittered rays per pixel, each method rendered once to warm up and then timed over " << run.repeats
-     << " runs\n\n"
+     << " jittered rays per pixel, each method rendered once to warm up and then timed over "
+     << counted(run.repeats, "run") << "\n\n"
      << "`time` is the median device time (GPU timestamps) per frame when the device has timestamps, else the "
         "median wall time; `min–max` is its spread; `prepare` is the one-off set-up (buffers, precomputed "
         "tables, pipeline) plus the warm-up frame. Errors are against the reference, with the metrics of "

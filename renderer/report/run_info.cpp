@@ -1,4 +1,5 @@
 #include "report/run_info.hpp"
+#include "common/counted.hpp"
 
 #include <ctime>
 #include <fstream>
@@ -28,7 +29,7 @@ std::string proc_value(const char* file, const std::string& key) {
 std::string machine_description() {
   std::ostringstream out;
   const std::string cpu = proc_value("/proc/cpuinfo", "model name");
-  out << (cpu.empty() ? "unknown CPU" : cpu) << ", " << std::thread::hardware_concurrency() << " logical cores";
+  out << (cpu.empty() ? "unknown CPU" : cpu) << ", " << counted(std::thread::hardware_concurrency(), "logical core");
   std::istringstream memory(proc_value("/proc/meminfo", "MemTotal"));
   double kib = 0.0;
   if (memory >> kib && kib > 0.0) {

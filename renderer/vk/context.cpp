@@ -5,6 +5,7 @@
 #include <iterator>
 #include <iostream>
 
+#include "common/counted.hpp"
 #include "common/error.hpp"
 
 namespace facet::vk {
@@ -102,8 +103,8 @@ uint32_t choose_device(const std::vector<DeviceInfo>& infos, const std::string& 
   unsigned long index = std::strtoul(wanted.c_str(), &end, 10);
   if (end != wanted.c_str() && *end == '\0') {
     if (index >= infos.size())
-      throw Error("--device " + wanted + ": there are only " + std::to_string(infos.size()) +
-                  " Vulkan devices (see 'facet info')");
+      throw Error("--device " + wanted + ": out of range, this machine has " +
+                  counted(static_cast<std::int64_t>(infos.size()), "Vulkan device") + " (see 'facet info')");
     return static_cast<uint32_t>(index);
   }
   for (const auto& info : infos)

@@ -88,6 +88,8 @@ TEST(Job, DefaultsAndOneLineErrors) {
   EXPECT_EQ(error(R"({"scenes": ["s.json"], "methods": ["naive"], "output": "x.exr", "widht": 3})")
                 .rfind(file + ": unknown key \"widht\" in the top level", 0),
             0u);
+  EXPECT_EQ(error(R"({"scenes": ["s.json"], "method": ["naive"], "output": "x.exr"})"),
+            file + ": unknown key \"method\" in the top level (did you mean \"methods\"?)");
   EXPECT_EQ(error(R"({"scenes": [], "methods": ["naive"], "output": "x.exr"})"),
             file + ": scenes must be a non-empty array of strings, got []");
   EXPECT_EQ(error(R"({"scenes": ["s.json"], "methods": ["naive"], "output": "x.png"})"),

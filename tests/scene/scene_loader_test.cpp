@@ -145,7 +145,8 @@ TEST(SceneLoader, EachInvalidValueIsNamed) {
       {"/objects/1/radius", 0, "scenes/x.json: objects[1].radius must be a positive number, got 0"},
       {"/objects/1/radius", -2, "scenes/x.json: objects[1].radius must be a positive number, got -2"},
       {"/objects/1/raduis", 2,
-       "scenes/x.json: unknown key \"raduis\" in objects[1] (known keys: center, material, radius, type)"},
+       "scenes/x.json: unknown key \"raduis\" in objects[1] (did you mean \"radius\"? known keys: center, material, "
+       "radius, type)"},
       {"/objects/1/material", "gray",
        "scenes/x.json: objects[1].material must name a material in \"materials\" (defined: grey), got \"gray\""},
       {"/objects/0/normal", Json::array({0, 0, 0}),
@@ -155,8 +156,8 @@ TEST(SceneLoader, EachInvalidValueIsNamed) {
       {"/objects/0", "plane", "scenes/x.json: objects[0] must be a JSON object, got \"plane\""},
       {"/objects", Json::object(), "scenes/x.json: objects must be an array, got {}"},
       {"/lights", Json::array(),
-       "scenes/x.json: unknown key \"lights\" in the top level (known keys: ambient, background, camera, "
-       "camera_path, light, materials, objects)"},
+       "scenes/x.json: unknown key \"lights\" in the top level (did you mean \"light\"? known keys: ambient, "
+       "background, camera, camera_path, light, materials, objects)"},
   };
   for (const InvalidCase& c : cases) {
     Json doc = example();
@@ -166,6 +167,9 @@ TEST(SceneLoader, EachInvalidValueIsNamed) {
   Json missing = example();
   missing["objects"][1].erase("radius");
   EXPECT_EQ(parse_error(missing), "scenes/x.json: objects[1].radius is required but missing");
+  // A typo of the required key is the typo, not a missing key (scenes/README.md, "Rules").
+  missing["objects"][1]["raduis"] = 1;
+  EXPECT_EQ(parse_error(missing), "scenes/x.json: unknown key \"raduis\" in objects[1] (did you mean \"radius\"?)");
   EXPECT_EQ(parse_error(Json::array()), "scenes/x.json: the top level must be a JSON object, got []");
 }
 

@@ -212,8 +212,8 @@ TEST(SubpixelMaterials, EachInvalidValueIsNamed) {
        f + "materials.m.texture.noise.octaves must be an integer in [1, 24], got 0"},
       {"/materials/m/texture/noise/gain", 2, f + "materials.m.texture.noise noise gain must be in [0, 1], got 2"},
       {"/materials/m/texture/noise/sead", 2,
-       f + "unknown key \"sead\" in materials.m.texture.noise (known keys: base_frequency, gain, height, lacunarity, "
-           "octaves, seed, width)"},
+       f + "unknown key \"sead\" in materials.m.texture.noise (did you mean \"seed\"? known keys: base_frequency, "
+           "gain, height, lacunarity, octaves, seed, width)"},
       {"/materials/m/texture", Json::parse(R"({"file": "absent.exr"})"),
        f + "materials.m.texture.file: scenes/absent.exr: no such file"},
   };

@@ -1,0 +1,26 @@
+#include "cli/idle_options.hpp"
+
+#include "report/method_catalogue.hpp"
+
+namespace facet::cli {
+
+std::vector<std::string> idle_option_warnings(const Scene& scene, const gpu::RenderMethod& method,
+                                              const std::vector<std::string>& diffraction_options) {
+  const report::SceneFeatures features = report::scene_features(scene);
+  const std::string source = scene.source.string();
+  std::vector<std::string> warnings;
+  if (method.texture != gpu::RenderMethod::Texture::Naive && !features.colormap_texture && !features.microsurface) {
+    const std::string strata = method.samples_per_axis > 1 ? "ss:" + std::to_string(method.samples_per_axis) : "naive";
+    warnings.push_back("facet: warning: " + source + " has no colormap_texture or microsurface material: --method " +
+                       method.name() + " renders it as " + strata);
+  }
+  if (!diffraction_options.empty() && !features.diffraction) {
+    std::string given;
+    for (const std::string& option : diffraction_options) given += (given.empty() ? "" : ", ") + option;
+    warnings.push_back("facet: warning: " + source + " has no diffraction material: " + given +
+                       (diffraction_options.size() == 1 ? " does" : " do") + " nothing");
+  }
+  return warnings;
+}
+
+}  // namespace facet::cli
