@@ -1,15 +1,14 @@
 #include "diffraction/exact_transform.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include "assets/real_fft2d.hpp"
 #include "diffraction/half_spectrum.hpp"
 
 namespace facet::diffraction {
 
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925;
-}
+namespace {}
 
 ExactTransform::ExactTransform(const Grating& grating, const SpectralTables& tables)
     : tables_(&tables), samples_(grating.samples), normalised_(grating.height_nm.size()) {
@@ -35,7 +34,7 @@ std::complex<double> ExactTransform::Bins::at(int jx, int jy) const {
 }
 
 DiffractionResult ExactTransform::evaluate(const DiffractionQuery& q) const {
-  const Bins p = bins(kTwoPi / q.lambda_nm * exact_phase_w(q) * tables_->hs_nm);
+  const Bins p = bins((2.0 * std::numbers::pi) / q.lambda_nm * exact_phase_w(q) * tables_->hs_nm);
   return evaluate_from_bins(*tables_, q, [&](int jx, int jy) { return p.at(jx, jy); });
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "common/error.hpp"
 #include "diffraction/cie_tables.hpp"
@@ -12,9 +13,6 @@ namespace facet::diffraction {
 namespace {
 
 using namespace kernels::f64;
-
-constexpr double kTwoPi = 6.283185307179586476925;
-constexpr double kPi = 3.14159265358979323846;
 
 // The largest divisor P of M such that shifting the field by M / P samples along (dx, dy) leaves it unchanged.
 int repeats_along(const Grating& g, int dx, int dy) {
@@ -43,7 +41,7 @@ double worst_orders(const DiffractionOrderLattice& L) {
 // points in a disc of radius rho around a uniformly placed point), and each of them is integrated
 // over the pixel's wavelengths with steps of at most max_step.
 double expected_nodes(const DiffractionOrderLattice& L) {
-  const double overlap = kPi * L.reach * L.reach / (L.frequency.x * L.frequency.y);
+  const double overlap = std::numbers::pi * L.reach * L.reach / (L.frequency.x * L.frequency.y);
   return overlap * (kCieLambdaMaxNm - kCieLambdaMinNm) / L.max_step;
 }
 
@@ -74,15 +72,15 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
   const PatchRepeats repeats = patch_repeats(grating);
   DiffractionOrderLattice& L = plan.lattice;
   L.repeats = glm::ivec2(repeats.x, repeats.y);
-  L.frequency = kTwoPi * glm::dvec2(L.repeats) / tables.period_nm;
+  L.frequency = (2.0 * std::numbers::pi) * glm::dvec2(L.repeats) / tables.period_nm;
   L.sigma_nm = tables.sigma_nm;
   L.reach = std::sqrt(2.0 * std::log(1.0 / tolerance)) / tables.sigma_nm;
-  L.k_min = kTwoPi / kCieLambdaMaxNm;
-  L.k_max = kTwoPi / kCieLambdaMinNm;
+  L.k_min = (2.0 * std::numbers::pi) / kCieLambdaMaxNm;
+  L.k_max = (2.0 * std::numbers::pi) / kCieLambdaMinNm;
   // F.9: the midpoint rule's error on a Gaussian of deviation s at step h is 2 exp(-2 pi^2 s^2 / h^2) <= tol / 2,
   // and the observer alone needs observer_spacing. Both halved: a peak times the observer is
   // neither (measured: 5e-3 of the colour at the full steps, 2e-4 at half, tol 1e-3).
-  L.peak_step = 0.5 * kPi * std::sqrt(2.0 / std::log(4.0 / tolerance));
+  L.peak_step = 0.5 * std::numbers::pi * std::sqrt(2.0 / std::log(4.0 / tolerance));
   L.max_step = 0.5 * observer_spacing(tolerance, light);
   plan.worst_orders = worst_orders(L);
   plan.expected_nodes = expected_nodes(L);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <tbb/parallel_for.h>
+#include <numbers>
 
 #include "common/error.hpp"
 #include "kernels/shared.hpp"
@@ -18,7 +19,6 @@ namespace {
 using namespace kernels::f64;
 using Complex = std::complex<double>;
 
-constexpr double kTwoPi = 6.283185307179586476925;
 constexpr double kHalfEpsilon = 1.0 / 2048.0;  // unit roundoff of IEEE half (11-bit significand)
 // Wavelengths whose window weights near (u, v) sum below this add at most its square (relative to
 // |H| <= 1) to |S|^2: skipped.
@@ -41,7 +41,7 @@ struct WavelengthShift {
 WavelengthShift wavelength_shift(const SpectralTables& t, double lambda_nm, double w_centre) {
   WavelengthShift s;
   const int N = t.N;
-  s.k = kTwoPi / lambda_nm;
+  s.k = (2.0 * std::numbers::pi) / lambda_nm;
   std::vector<Complex> power(N);
   Complex p(1.0);
   for (int n = 0; n < N; ++n) {
@@ -166,7 +166,7 @@ PreintegratedLayout preintegrated_layout(const SpectralTables& tables, const Wav
                                          const PreintegratedDomain& domain, const PreintegrationSettings& settings) {
   if (!(settings.tolerance > 0.0 && settings.tolerance < 1.0))
     throw Error("preintegrated tables: tolerance must lie in (0, 1)");
-  const double k_max = kTwoPi / shortest_weighted_wavelength(samples);
+  const double k_max = (2.0 * std::numbers::pi) / shortest_weighted_wavelength(samples);
   // F.6: bilinear error <= (h_u^2 + h_v^2) / 8 * 2 sigma^2 k^2 * envelope <= tol * envelope.
   const double h = std::sqrt(2.0 * settings.tolerance) / (tables.sigma_nm * k_max);
   PreintegratedLayout l{};

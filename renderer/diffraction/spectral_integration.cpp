@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "common/error.hpp"
 #include "diffraction/cie_tables.hpp"
@@ -10,8 +11,6 @@
 namespace facet::diffraction {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double light_power(Illuminant light, double lambda_nm) { return light == Illuminant::D65 ? cie_d65(lambda_nm) : 1.0; }
 
@@ -65,9 +64,9 @@ double observer_spacing(double tolerance, Illuminant light) {
 }
 
 double peak_spacing(const SpectralTables& tables, double lambda_min_nm, double tolerance) {
-  const double k_max = 2.0 * kPi / lambda_min_nm;
+  const double k_max = 2.0 * std::numbers::pi / lambda_min_nm;
   const double s = lambda_min_nm / (std::sqrt(2.0) * k_max * tables.sigma_nm * 2.0);
-  return s * kPi * std::sqrt(2.0 / std::log(4.0 / tolerance));  // half the tolerance for the aliases
+  return s * std::numbers::pi * std::sqrt(2.0 / std::log(4.0 / tolerance));  // half the tolerance for the aliases
 }
 
 WavelengthSamples diffraction_wavelength_samples(const SpectralTables& tables, double tolerance, Illuminant light) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "assets/real_fft2d.hpp"
 #include "common/error.hpp"
@@ -12,7 +13,6 @@ namespace facet::diffraction {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925;
 constexpr int kMaxTerms = 64;
 
 void validate(const TableRange& range) {
@@ -38,7 +38,7 @@ int taylor_term_count(double x_max, double tolerance) {
 }
 
 int window_radius(double period_nm, double sigma_nm, double tolerance) {
-  const double reach = std::sqrt(2.0 * std::log(1.0 / tolerance)) * period_nm / (kTwoPi * sigma_nm);
+  const double reach = std::sqrt(2.0 * std::log(1.0 / tolerance)) * period_nm / ((2.0 * std::numbers::pi) * sigma_nm);
   return std::max(0, static_cast<int>(std::ceil(reach - 0.5)));
 }
 
@@ -62,7 +62,7 @@ SpectralTables build_spectral_tables(const Grating& grating, const TableRange& r
   double spread = 0.0;
   for (double h : grating.height_nm) spread = std::max(spread, std::abs(h - t.mean_nm));
   t.hs_nm = spread > 0.0 ? spread : 1.0;  // a flat patch: any unit works, every H_n>0 is 0
-  t.x_max = (kTwoPi / range.lambda_min_nm) * range.w_max * spread;
+  t.x_max = ((2.0 * std::numbers::pi) / range.lambda_min_nm) * range.w_max * spread;
   t.N = range.terms > 0 ? range.terms : taylor_term_count(t.x_max, range.tolerance);
   t.stored_terms = t.N;
   t.r = window_radius(t.period_nm, t.sigma_nm, range.tolerance);

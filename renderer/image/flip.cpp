@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <numbers>
 #include <vector>
 
 #include "image/metrics.hpp"
@@ -13,7 +14,6 @@ namespace facet {
 namespace {
 
 using Plane = std::vector<double>;
-constexpr double kPi = 3.14159265358979323846;
 
 // Linear sRGB (D65) to CIE XYZ, IEC 61966-2-1; glm is column-major, so the rows appear as columns.
 const glm::dmat3 kRgbToXyz = glm::transpose(glm::dmat3(0.4124564, 0.3575761, 0.1804375,  //
@@ -95,17 +95,18 @@ std::array<std::vector<SeparableTerm>, 3> csf_kernels(double ppd) {
   const double a[3][2] = {{1.0, 0.0}, {1.0, 0.0}, {34.1, 13.5}};
   const double b[3][2] = {{0.0047, 1e-5}, {0.0053, 1e-5}, {0.04, 0.025}};
   // One radius for all three: three standard deviations of the widest term (b = 0.04).
-  const int radius = static_cast<int>(std::ceil(3.0 * std::sqrt(0.04 / (2.0 * kPi * kPi)) * ppd));
+  const int radius =
+      static_cast<int>(std::ceil(3.0 * std::sqrt(0.04 / (2.0 * std::numbers::pi * std::numbers::pi)) * ppd));
   std::array<std::vector<SeparableTerm>, 3> kernels;
   for (int c = 0; c < 3; ++c) {
     double total = 0.0;
     for (int i = 0; i < 2; ++i) {
       if (a[c][i] == 0.0) continue;
-      SeparableTerm term{a[c][i] * std::sqrt(kPi / b[c][i]), std::vector<double>(2 * radius + 1)};
+      SeparableTerm term{a[c][i] * std::sqrt(std::numbers::pi / b[c][i]), std::vector<double>(2 * radius + 1)};
       double taps_sum = 0.0;
       for (int k = -radius; k <= radius; ++k) {
         const double x = k / ppd;
-        taps_sum += term.taps[k + radius] = std::exp(-kPi * kPi * x * x / b[c][i]);
+        taps_sum += term.taps[k + radius] = std::exp(-std::numbers::pi * std::numbers::pi * x * x / b[c][i]);
       }
       total += term.weight * taps_sum * taps_sum;
       kernels[c].push_back(term);

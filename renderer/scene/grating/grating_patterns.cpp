@@ -2,12 +2,11 @@
 
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 namespace facet::diffraction {
 
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925;
 
 // Samples sit at x = i * spacing (i = 0..samples-1), the same positions the DFT assumes.
 std::vector<double> sample_patch(PatchGrid grid, const std::function<double(double, double)>& height) {
@@ -23,7 +22,8 @@ double fraction(double t) { return t - std::floor(t); }
 }  // namespace
 
 std::vector<double> sinusoid_heights(PatchGrid grid, double period_nm, double amplitude_nm) {
-  return sample_patch(grid, [=](double x, double) { return amplitude_nm * std::sin(kTwoPi * x / period_nm); });
+  return sample_patch(
+      grid, [=](double x, double) { return amplitude_nm * std::sin((2.0 * std::numbers::pi) * x / period_nm); });
 }
 
 std::vector<double> rectangular_heights(PatchGrid grid, double period_nm, double amplitude_nm, double duty) {
@@ -35,7 +35,9 @@ std::vector<double> rectangular_heights(PatchGrid grid, double period_nm, double
 
 std::vector<double> crossed_heights(PatchGrid grid, double period_x_nm, double period_y_nm, double amplitude_nm) {
   return sample_patch(grid, [=](double x, double y) {
-    return 0.5 * amplitude_nm * (std::sin(kTwoPi * x / period_x_nm) + std::sin(kTwoPi * y / period_y_nm));
+    return 0.5 * amplitude_nm *
+           (std::sin((2.0 * std::numbers::pi) * x / period_x_nm) +
+            std::sin((2.0 * std::numbers::pi) * y / period_y_nm));
   });
 }
 
@@ -46,9 +48,9 @@ std::vector<double> finger_heights(PatchGrid grid, double period_nm, double ampl
     const double shift = std::fmod(row, 2.0) == 0.0 ? 0.0 : 0.5;
     // Raised-cosine ridge of width duty * period, centred in its period.
     const double across = (fraction(x / period_nm + shift) - 0.5) / duty;
-    const double ridge = std::abs(across) < 0.5 ? std::pow(std::cos(0.5 * kTwoPi * across), 2) : 0.0;
+    const double ridge = std::abs(across) < 0.5 ? std::pow(std::cos(0.5 * (2.0 * std::numbers::pi) * across), 2) : 0.0;
     // Each finger tapers to nothing at both ends, like the overlapping cells of a snake scale.
-    const double along = std::sin(0.5 * kTwoPi * fraction(y / finger_length_nm));
+    const double along = std::sin(0.5 * (2.0 * std::numbers::pi) * fraction(y / finger_length_nm));
     return amplitude_nm * ridge * along * along;
   });
 }
