@@ -8,8 +8,6 @@
 
 namespace facet::diffraction {
 
-namespace {}
-
 ExactTransform::ExactTransform(const Grating& grating, const SpectralTables& tables)
     : tables_(&tables), samples_(grating.samples), normalised_(grating.height_nm.size()) {
   for (size_t i = 0; i < normalised_.size(); ++i)

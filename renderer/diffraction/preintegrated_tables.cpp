@@ -4,10 +4,10 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 #include <tbb/parallel_for.h>
-#include <numbers>
 
 #include "common/error.hpp"
 #include "kernels/shared.hpp"

@@ -1,10 +1,11 @@
 #include "report/run_info.hpp"
-#include "common/counted.hpp"
 
 #include <ctime>
 #include <fstream>
 #include <sstream>
 #include <thread>
+
+#include "common/counted.hpp"
 
 namespace facet::report {
 

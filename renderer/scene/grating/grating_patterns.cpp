@@ -48,9 +48,9 @@ std::vector<double> finger_heights(PatchGrid grid, double period_nm, double ampl
     const double shift = std::fmod(row, 2.0) == 0.0 ? 0.0 : 0.5;
     // Raised-cosine ridge of width duty * period, centred in its period.
     const double across = (fraction(x / period_nm + shift) - 0.5) / duty;
-    const double ridge = std::abs(across) < 0.5 ? std::pow(std::cos(0.5 * (2.0 * std::numbers::pi) * across), 2) : 0.0;
+    const double ridge = std::abs(across) < 0.5 ? std::pow(std::cos(std::numbers::pi * across), 2) : 0.0;
     // Each finger tapers to nothing at both ends, like the overlapping cells of a snake scale.
-    const double along = std::sin(0.5 * (2.0 * std::numbers::pi) * fraction(y / finger_length_nm));
+    const double along = std::sin(std::numbers::pi * fraction(y / finger_length_nm));
     return amplitude_nm * ridge * along * along;
   });
 }
