@@ -109,7 +109,8 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
     const auto [range, what] = [&]() -> std::pair<VkDeviceSize, const char*> {
       switch (buffer_kinds_[i]) {
         case BufferKind::Uniform: return {limits.maxUniformBufferRange, "uniform buffer range"};
-        case BufferKind::Texels: return {VkDeviceSize{16} * limits.maxTexelBufferElements, "texel buffer size"};
+        case BufferKind::Texels:
+          return {buffers[i]->texel_bytes() * limits.maxTexelBufferElements, "texel buffer size"};
         case BufferKind::Storage: break;
       }
       return {limits.maxStorageBufferRange, "storage buffer range"};
