@@ -12,6 +12,7 @@ layout(std430, binding = FACET_EVAL_BINDING_OUT) writeonly buffer Out { EvalReco
 layout(std430, binding = FACET_EVAL_BINDING_DIFFRACTION_TABLE) readonly buffer Table { vec2 diffraction_coefficients[]; };
 layout(std430, binding = FACET_EVAL_BINDING_DIFFRACTION_INFO) readonly buffer Info { DiffractionTableInfo info; };
 layout(push_constant) uniform Push { EvalRange range; };
+vec2 diffraction_coefficient_at(uint i) { return diffraction_coefficients[i]; }
 
 #include "render/diffraction_taylor.glsl"
 

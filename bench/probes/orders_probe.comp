@@ -17,6 +17,8 @@ layout(push_constant) uniform Probe {
   int entries;
   uint count;
 } probe;
+vec2 diffraction_coefficient_at(uint i) { return diffraction_coefficients[i]; }
+vec4 diffraction_observer_at(uint i) { return diffraction_observer[i]; }
 
 #include "render/diffraction_orders.glsl"
 

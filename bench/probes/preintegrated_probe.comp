@@ -14,6 +14,8 @@ layout(push_constant) uniform Probe {
   float R0;
   uint count;
 } probe;
+uint diffraction_preintegrated_word(uint i) { return diffraction_preintegrated_words[i]; }
+float diffraction_preintegrated_scale(uint i) { return diffraction_preintegrated_scales[i]; }
 
 #include "render/diffraction_preintegrated.glsl"
 

@@ -1,4 +1,4 @@
-// The diffraction materials of a scene in the direct pass's storage buffers (the slots
+// The diffraction materials of a scene in the direct pass's texel buffers (the slots
 // FACET_RENDER_BINDING_DIFFRACTION_* of shaders/layout/render_layout.glsl): every material's spectral
 // tables (float) and wavelength samples, prepared for this render (diffraction/prepared_diffraction.hpp).
 #pragma once

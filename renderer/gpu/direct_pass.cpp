@@ -79,6 +79,14 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
   return {constants.begin(), constants.end()};
 }
 
+// The scene's bindings (SceneBuffers::binding_kinds), then the diffraction buffers, read in the
+// per-wavelength loops, as texel buffers (render/diffraction_bindings.glsl).
+std::vector<vk::BufferKind> binding_kinds() {
+  std::vector<vk::BufferKind> kinds = SceneBuffers::binding_kinds();
+  kinds.resize(FACET_RENDER_BINDING_COUNT, vk::BufferKind::Texels);
+  return kinds;
+}
+
 }  // namespace
 
 int tile_count(int width, int height, int tile_size) {
@@ -102,7 +110,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                                     .buffer_count = FACET_RENDER_BINDING_COUNT,
                                     .push_constant_bytes = sizeof(GpuTile),
                                     .specialization = specialization(scene, method, diffraction_.method),
-                                    .buffer_kinds = SceneBuffers::binding_kinds()});
+                                    .buffer_kinds = binding_kinds()});
       })) {
   check_height_field_tracing(scene, method);
   // lavapipe JIT-compiles a pipeline on its first dispatch: one pixel here keeps that out of every

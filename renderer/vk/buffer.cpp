@@ -56,6 +56,7 @@ Buffer::Buffer(Buffer&& other) noexcept
       buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
       memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
       mapped_(std::exchange(other.mapped_, nullptr)),
+      texel_bytes_(other.texel_bytes_),
       texel_view_(std::exchange(other.texel_view_, VK_NULL_HANDLE)) {}
 
 Buffer::~Buffer() {
@@ -66,10 +67,12 @@ Buffer::~Buffer() {
 
 VkBufferView Buffer::texel_view() const {
   if (texel_view_) return texel_view_;
-  if (size_ < 16) throw Error("internal: a texel view of a buffer smaller than one texel");
+  if (size_ < texel_bytes_) throw Error("internal: a texel view of a buffer smaller than one texel");
   VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
   info.buffer = buffer_;
-  info.format = VK_FORMAT_R32G32B32A32_UINT;
+  info.format = texel_bytes_ == 4   ? VK_FORMAT_R32_UINT
+                : texel_bytes_ == 8 ? VK_FORMAT_R32G32_UINT
+                                    : VK_FORMAT_R32G32B32A32_UINT;
   info.range = VK_WHOLE_SIZE;
   check(vkCreateBufferView(context_->device(), &info, nullptr, &texel_view_), "vkCreateBufferView");
   return texel_view_;

@@ -19,7 +19,8 @@ namespace facet::vk {
 // branch or loop: ~12 ns per float per invocation, 15x a uniform buffer's or a texel fetch's vector
 // gather (docs/render_speed.md). Read-only data is therefore better bound as
 //   Uniform   a uniform buffer (at most maxUniformBufferRange bytes, 64 KiB on lavapipe), or
-//   Texels    a uniform texel buffer of RGBA32UI texels (usamplerBuffer), of any size.
+//   Texels    a uniform texel buffer (usamplerBuffer) of R32UI, RG32UI or RGBA32UI texels as wide as
+//             the buffer's elements (Buffer::texel_bytes), of any size.
 enum class BufferKind : uint32_t { Storage, Uniform, Texels };
 
 class Buffer {
@@ -32,11 +33,12 @@ class Buffer {
   Buffer& operator=(const Buffer&) = delete;
 
   // Creates a buffer holding `items` (at least one element of storage, so that empty
-  // arrays can still be bound).
+  // arrays can still be bound). Its texels are one element of 4 or 8 bytes, else 16 bytes.
   template <class T>
   static Buffer from(Context& context, std::span<const T> items) {
     Buffer buffer(context, sizeof(T) * (items.empty() ? 1 : items.size()));
     if (!items.empty()) buffer.upload(items.data(), items.size_bytes());
+    buffer.texel_bytes_ = sizeof(T) == 4 || sizeof(T) == 8 ? sizeof(T) : 16;
     return buffer;
   }
 
@@ -44,8 +46,10 @@ class Buffer {
   void download(void* data, VkDeviceSize bytes, VkDeviceSize offset = 0) const;
 
   VkBuffer handle() const { return buffer_; }
-  // A view of the whole buffer as RGBA32UI texels (made on first use, kept with the buffer).
+  // A view of the whole buffer as texels of texel_bytes() (R32UI, RG32UI or RGBA32UI; made on first use,
+  // kept with the buffer).
   VkBufferView texel_view() const;
+  VkDeviceSize texel_bytes() const { return texel_bytes_; }
   VkDeviceSize size() const { return size_; }
 
  private:
@@ -57,6 +61,7 @@ class Buffer {
   VkBuffer buffer_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   void* mapped_ = nullptr;  // null when the memory is not host-visible
+  VkDeviceSize texel_bytes_ = 16;
   mutable VkBufferView texel_view_ = VK_NULL_HANDLE;
 };
 

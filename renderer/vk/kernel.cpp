@@ -16,11 +16,13 @@ VkDescriptorType descriptor_type(BufferKind kind) {
   return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
-// The most bytes a binding of `kind` may hold, and its name for the error.
-std::pair<VkDeviceSize, const char*> binding_range(BufferKind kind, const VkPhysicalDeviceLimits& limits) {
+// The most bytes a binding of `kind` may hold (texel buffers: in elements of `texel_bytes`), and its
+// name for the error.
+std::pair<VkDeviceSize, const char*> binding_range(BufferKind kind, VkDeviceSize texel_bytes,
+                                                   const VkPhysicalDeviceLimits& limits) {
   switch (kind) {
     case BufferKind::Uniform: return {limits.maxUniformBufferRange, "uniform buffer range"};
-    case BufferKind::Texels: return {VkDeviceSize{16} * limits.maxTexelBufferElements, "texel buffer size"};
+    case BufferKind::Texels: return {texel_bytes * limits.maxTexelBufferElements, "texel buffer size"};
     case BufferKind::Storage: break;
   }
   return {limits.maxStorageBufferRange, "storage buffer range"};
@@ -116,7 +118,7 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
   for (size_t i = 0; i < buffers.size(); ++i)
     if (!buffers[i]) throw Error("internal: kernel " + name_ + ": no buffer at binding " + std::to_string(i));
   for (size_t i = 0; i < buffers.size(); ++i) {
-    const auto [range, what] = binding_range(buffer_kinds_[i], limits);
+    const auto [range, what] = binding_range(buffer_kinds_[i], buffers[i]->texel_bytes(), limits);
     if (buffers[i]->size() > range)
       throw Error("kernel " + name_ + ": a buffer of " + std::to_string(buffers[i]->size()) +
                   " bytes exceeds the device's " + what + " of " + std::to_string(range) + " bytes");

@@ -1,8 +1,8 @@
 // The order-restricted colour (lib/diffraction_orders.glsl; the C++ twin is evaluate_orders in
 // renderer/diffraction/order_wavelengths.cpp): the per-wavelength Taylor BRDF
 // (render/diffraction_taylor.glsl) at the nodes of each reaching order's interval, weighted by the
-// order's share, the node's step and the observer. The includer declares
-// `vec2 diffraction_coefficients[]` and `vec4 diffraction_observer[]` (XYZ per nm, xyz_density).
+// order's share, the node's step and the observer. The includer defines
+// `vec2 diffraction_coefficient_at(uint)` and `vec4 diffraction_observer_at(uint)` (XYZ per nm, xyz_density).
 // Gratings not worth restricting (F.10, F.11) never reach this path (the host picks the spectral one).
 #ifndef FACET_RENDER_DIFFRACTION_ORDERS_GLSL
 #define FACET_RENDER_DIFFRACTION_ORDERS_GLSL
@@ -11,7 +11,7 @@
 #include "render/diffraction_taylor.glsl"
 
 struct OrderObserver {
-  uint first;     // of the material's table in diffraction_observer
+  uint first;     // of the material's table in the observer entries
   int entries;    // 1 nm entries from lambda0
   float lambda0_nm;
 };
@@ -42,8 +42,8 @@ vec3 diffraction_orders_xyz(DiffractionOrderLattice L, DiffractionTableInfo info
     float lambda = diffraction_order_lambda(I, i);
     DiffractionObserverLookup look = diffraction_observer_lookup(lambda, o.lambda0_nm, o.entries);
     if (!look.valid) continue;
-    vec3 observer = mix(diffraction_observer[o.first + uint(look.index)].xyz,
-                        diffraction_observer[o.first + uint(look.index) + 1u].xyz, look.f);
+    vec3 observer = mix(diffraction_observer_at(o.first + uint(look.index)).xyz,
+                        diffraction_observer_at(o.first + uint(look.index) + 1u).xyz, look.f);
     float brdf = diffraction_taylor_value(info, first_coefficient, wi, wr, lambda, L.repeats).brdf;
     xyz += (brdf * diffraction_order_share(L, uv, lambda, j) * I.step) * observer;
   }

@@ -1,7 +1,7 @@
-// The pre-integrated diffraction colour from tables in storage buffers (lib/diffraction_preintegrated.glsl;
-// the C++ twin is evaluate_preintegrated in renderer/diffraction/preintegrated_tables.cpp). The
-// includer declares `uint diffraction_preintegrated_words[]` (the tables' packed words) and
-// `float diffraction_preintegrated_scales[]` (one scale per polynomial coefficient).
+// The pre-integrated diffraction colour from its tables (lib/diffraction_preintegrated.glsl; the C++
+// twin is evaluate_preintegrated in renderer/diffraction/preintegrated_tables.cpp). The includer
+// defines `uint diffraction_preintegrated_word(uint)` (the tables' packed words) and
+// `float diffraction_preintegrated_scale(uint)` (one scale per polynomial coefficient).
 #ifndef FACET_RENDER_DIFFRACTION_PREINTEGRATED_GLSL
 #define FACET_RENDER_DIFFRACTION_PREINTEGRATED_GLSL
 #include "lib/diffraction_preintegrated.glsl"
@@ -9,8 +9,8 @@
 // Where one material's tables live and what the kernel needs besides the grid.
 struct PreintegratedSource {
   PreintegratedGrid grid;
-  uint first_word;   // of the material's table in diffraction_preintegrated_words
-  uint first_scale;  // of its terms scales in diffraction_preintegrated_scales
+  uint first_word;   // of the material's table among the words
+  uint first_scale;  // of its terms scales among the scales
   float w_centre;
   float floor_lambda_nm;
   float sigma_nm;
@@ -20,11 +20,12 @@ struct PreintegratedSource {
 
 vec3 diffraction_preintegrated_corner(PreintegratedSource s, PreintegratedCell c, int du, int dv, int p) {
   uint k = s.first_word + uint(preintegrated_word_index(s.grid, c, du, dv, p));
-  float scale = diffraction_preintegrated_scales[s.first_scale + uint(p)];
+  float scale = diffraction_preintegrated_scale(s.first_scale + uint(p));
   return s.grid.words == 2
-             ? preintegrated_unpack_half(diffraction_preintegrated_words[k], diffraction_preintegrated_words[k + 1u], scale)
-             : preintegrated_unpack_float(diffraction_preintegrated_words[k], diffraction_preintegrated_words[k + 1u],
-                                          diffraction_preintegrated_words[k + 2u], scale);
+             ? preintegrated_unpack_half(diffraction_preintegrated_word(k), diffraction_preintegrated_word(k + 1u),
+                                         scale)
+             : preintegrated_unpack_float(diffraction_preintegrated_word(k), diffraction_preintegrated_word(k + 1u),
+                                          diffraction_preintegrated_word(k + 2u), scale);
 }
 
 // Linear sRGB for wi, wr (unit vectors toward the light and the viewer in the grating's frame, z >= 0).

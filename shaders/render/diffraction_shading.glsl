@@ -1,6 +1,6 @@
 // The diffracted light of "diffraction" materials in the direct pass (docs/diffraction.md,
 // "Rendering") and docs/diffraction_fast_paths.md: the FACET_RENDER_BINDING_DIFFRACTION_* slots of
-// layout/render_layout.glsl, compiled in only when kHasDiffraction is set.
+// layout/render_layout.glsl (render/diffraction_bindings.glsl), compiled in only when kHasDiffraction is set.
 // The per-pixel geometry (the grating frame, wi and wr in it) is computed once; then one switch on
 // kDiffractionMethod picks how the spectrum becomes a colour:
 //   0 spectral   sum over the material's wavelength samples of the Taylor BRDF times their XYZ weights
@@ -12,14 +12,7 @@
 #define FACET_RENDER_DIFFRACTION_SHADING_GLSL
 #include "layout/diffraction_layout.glsl"
 #include "lib/diffraction_frame.glsl"
-#include "render/scene_bindings.glsl"
-
-layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_COEFFICIENTS) readonly buffer DiffractionCoefficients { vec2 diffraction_coefficients[]; };
-layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_MATERIALS) readonly buffer DiffractionMaterials { GpuDiffractionMaterial diffraction_materials[]; };
-layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_WAVELENGTHS) readonly buffer DiffractionWavelengths { vec4 diffraction_wavelengths[]; };  // lambda, XYZ
-layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS) readonly buffer DiffractionPreintegratedWords { uint diffraction_preintegrated_words[]; };
-layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_SCALES) readonly buffer DiffractionPreintegratedScales { float diffraction_preintegrated_scales[]; };
-layout(std430, binding = FACET_RENDER_BINDING_DIFFRACTION_OBSERVER) readonly buffer DiffractionObserver { vec4 diffraction_observer[]; };  // XYZ per nm
+#include "render/diffraction_bindings.glsl"
 
 #include "render/diffraction_orders.glsl"
 #include "render/diffraction_preintegrated.glsl"
@@ -33,7 +26,7 @@ const uint kDiffractionOrders = 2u;
 vec3 diffraction_spectral_xyz(GpuDiffractionMaterial m, vec3 wi, vec3 wr) {
   vec3 xyz = vec3(0.0);
   for (uint i = m.offsets.y; i < m.offsets.y + m.offsets.z; ++i) {
-    vec4 sample_i = diffraction_wavelengths[i];
+    vec4 sample_i = diffraction_wavelength_at(i);
     xyz += diffraction_taylor_value(m.table, m.offsets.x, wi, wr, sample_i.x, ivec2(1, 1)).brdf * sample_i.yzw;
   }
   return xyz;
@@ -44,7 +37,7 @@ vec3 diffraction_spectral_xyz(GpuDiffractionMaterial m, vec3 wi, vec3 wr) {
 vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float visibility) {
   DiffractionDirections d = diffraction_directions(n, dpdu, l, v);
   if (!d.lit || visibility == 0.0) return vec3(0.0);
-  GpuDiffractionMaterial m = diffraction_materials[index];
+  GpuDiffractionMaterial m = diffraction_material_at(index);
   vec3 rgb = vec3(0.0);
   switch (kDiffractionMethod) {
     case kDiffractionPreintegrated:

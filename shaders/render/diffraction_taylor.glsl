@@ -1,17 +1,18 @@
-// Stam's diffraction BRDF at one wavelength from the spectral tables in a storage buffer: the
+// Stam's diffraction BRDF at one wavelength from the spectral tables: the
 // window sum over the bins near k(u, v) of each bin's Taylor sum (lib/diffraction_brdf.glsl; the
 // C++ twin is evaluate_taylor in renderer/diffraction/diffraction_eval.cpp). Used by the render
-// pass and by eval_diffraction.comp; the includer declares `vec2 diffraction_coefficients[]`.
+// pass and by eval_diffraction.comp; the includer defines `vec2 diffraction_coefficient_at(uint i)`
+// (render/diffraction_bindings.glsl reads a texel buffer, the eval kernel a storage buffer).
 #ifndef FACET_RENDER_DIFFRACTION_TAYLOR_GLSL
 #define FACET_RENDER_DIFFRACTION_TAYLOR_GLSL
 #include "layout/diffraction_layout.glsl"
 #include "lib/diffraction_brdf.glsl"
 #include "lib/diffraction_table.glsl"
 
-// H_n(j) of the tables starting at diffraction_coefficients[first].
+// H_n(j) of the tables starting at coefficient `first`.
 vec2 diffraction_coefficient(DiffractionTableInfo info, uint first, int n, int jx, int jy) {
   DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, info.shape.x, info.shape.w);
-  vec2 c = diffraction_coefficients[first + uint(e.index)];
+  vec2 c = diffraction_coefficient_at(first + uint(e.index));
   return e.conjugate ? vec2(c.x, -c.y) : c;
 }
 

@@ -26,6 +26,7 @@ layout(binding = FACET_RENDER_BINDING_COLORMAP_POINTS) uniform usamplerBuffer co
 layout(push_constant) uniform Push { GpuTile tile; };
 
 // Texel k of a table as words (u) or floats (f): a struct of n vec4 members is texels n i .. n i + n - 1.
+// Also read by render/diffraction_bindings.glsl.
 #define FACET_U(table, k) texelFetch(table, int(k))
 #define FACET_F(table, k) uintBitsToFloat(texelFetch(table, int(k)))
 
@@ -67,8 +68,5 @@ GpuColormap colormap_record(uint i) {
 }
 
 vec4 colormap_point(uint i) { return FACET_F(colormap_point_texels, i); }
-
-#undef FACET_U
-#undef FACET_F
 
 #endif
