@@ -35,7 +35,6 @@ if(FACET_SANITIZE)
     FACET_SANITIZER_DIR="${PROJECT_SOURCE_DIR}/tools/sanitizers")
 endif()
 
-# Adds the sanitizer defaults to executable `target` (nothing without FACET_SANITIZE).
 # Code that parses options, writes reports or drives the renderer and runs for milliseconds per
 # test (the command line, report, batch, and the tests that exercise them): -O0 in sanitizer builds,
 # a third of the compile time of the instrumented -O1/-O3 (23 s -> 7 s for compare_command.cpp).
@@ -54,6 +53,7 @@ function(facet_hot_sources)
   endif()
 endfunction()
 
+# Adds the sanitizer defaults to executable `target` (nothing without FACET_SANITIZE).
 function(facet_sanitize_executable target)
   if(FACET_SANITIZE)
     target_sources(${target} PRIVATE $<TARGET_OBJECTS:facet_sanitizer_defaults>)

@@ -13,6 +13,8 @@ std::string format_3g(double value) {
   return buffer;
 }
 
+std::string format_3g(const std::optional<double>& value) { return value ? format_3g(*value) : "–"; }
+
 std::vector<SceneRow> scene_rows(const BenchRun& run, const std::string& scene) {
   std::vector<SceneRow> rows;
   std::vector<CostError> points;

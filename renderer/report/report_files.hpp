@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,7 @@ std::vector<SceneRow> scene_rows(const BenchRun& run, const std::string& scene);
 
 // "12.3", "0.00123", "1.23e+04": three significant digits for tables.
 std::string format_3g(double value);
+// The same, or "–" for a missing value.
+std::string format_3g(const std::optional<double>& value);
 
 }  // namespace facet::report

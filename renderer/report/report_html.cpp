@@ -11,15 +11,13 @@ namespace facet::report {
 
 namespace {
 
-std::string optional_3g(const std::optional<double>& value) { return value ? format_3g(*value) : "–"; }
-
 constexpr const char* kStyle =
     "body{font-family:sans-serif;margin:1.5em;max-width:1400px}table{border-collapse:collapse;margin:0.5em 0}"
     "td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}"
     ".methods{display:flex;flex-wrap:wrap;gap:12px}.method{border:1px solid #ccc;padding:6px}"
     ".method img{display:block;max-width:320px}.front{color:#c33;font-weight:bold}.error{color:#c00}";
 
-void write_scene(std::ostringstream& html, const BenchRun& run, const SceneRun& scene) {
+void write_html_scene(std::ostringstream& html, const BenchRun& run, const SceneRun& scene) {
   html << "<h2 id=\"" << xml_escape(scene.name) << "\">" << xml_escape(scene.name) << "</h2>\n<p><code>"
        << xml_escape(scene.scene_file) << "</code>";
   if (scene.error) {
@@ -47,7 +45,7 @@ void write_scene(std::ostringstream& html, const BenchRun& run, const SceneRun& 
   html << "</div>\n";
 }
 
-void write_headline(std::ostringstream& html, const BenchRun& run) {
+void write_html_headline(std::ostringstream& html, const BenchRun& run) {
   const std::vector<Headline> lines = headlines(run.records);
   if (lines.empty()) return;
   html << "<h2>Headline: <code>filtered</code> against the cheapest <code>ss:K</code> as accurate</h2>\n<table>"
@@ -65,14 +63,14 @@ void write_headline(std::ostringstream& html, const BenchRun& run) {
   html << "</table>\n";
 }
 
-void write_stability(std::ostringstream& html, const BenchRun& run) {
+void write_html_stability(std::ostringstream& html, const BenchRun& run) {
   if (run.stability.empty()) return;
   html << "<h2>Numerical stability of the math kernels</h2>\n<table><tr><th>kernel</th><th>hard cases</th>"
           "<th>reference</th><th>error</th><th>f64</th><th>f32</th><th>GPU</th></tr>\n";
   for (const StabilityRow& row : run.stability)
     html << "<tr><td><code>" << xml_escape(row.kernel) << "</code></td><td>" << xml_escape(row.domain) << "</td><td>"
-         << xml_escape(row.reference) << "</td><td>" << xml_escape(row.measure) << "</td><td>" << optional_3g(row.f64)
-         << "</td><td>" << optional_3g(row.f32) << "</td><td>" << optional_3g(row.gpu) << "</td></tr>\n";
+         << xml_escape(row.reference) << "</td><td>" << xml_escape(row.measure) << "</td><td>" << format_3g(row.f64)
+         << "</td><td>" << format_3g(row.f32) << "</td><td>" << format_3g(row.gpu) << "</td></tr>\n";
   html << "</table>\n";
 }
 
@@ -87,9 +85,9 @@ std::string report_html(const BenchRun& run) {
        << counted(run.repeats, "timed run")
        << " after a warm-up. Time: median device time per frame (wall time if the device "
        << "has no timestamps). Heat maps: per-pixel FLIP against the reference (0 black, 1 yellow).</p>\n";
-  write_headline(html, run);
-  for (const SceneRun& scene : run.scenes) write_scene(html, run, scene);
-  write_stability(html, run);
+  write_html_headline(html, run);
+  for (const SceneRun& scene : run.scenes) write_html_scene(html, run, scene);
+  write_html_stability(html, run);
   html << "</body></html>\n";
   return html.str();
 }

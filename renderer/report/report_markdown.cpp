@@ -9,8 +9,6 @@ namespace facet::report {
 
 namespace {
 
-std::string optional_3g(const std::optional<double>& value) { return value ? format_3g(*value) : "–"; }
-
 // A message inside a table cell: '|' would end the cell, a newline the row.
 std::string table_cell(const std::string& text) {
   std::string out;
@@ -30,7 +28,7 @@ void write_header(std::ostringstream& md, const BenchRun& run) {
         "`facet compare` (docs/report.md).\n\n";
 }
 
-void write_headline(std::ostringstream& md, const BenchRun& run) {
+void write_markdown_headline(std::ostringstream& md, const BenchRun& run) {
   const std::vector<Headline> lines = headlines(run.records);
   if (lines.empty()) return;
   md << "## Headline: `filtered` against the cheapest `ss:K` as accurate\n\n"
@@ -48,7 +46,7 @@ void write_headline(std::ostringstream& md, const BenchRun& run) {
   md << "\n";
 }
 
-void write_scene(std::ostringstream& md, const BenchRun& run, const SceneRun& scene) {
+void write_markdown_scene(std::ostringstream& md, const BenchRun& run, const SceneRun& scene) {
   md << "## " << scene.name << "\n\n`" << scene.scene_file << "`";
   if (scene.error) {
     md << ": **failed**: " << table_cell(*scene.error) << "\n\n";
@@ -69,21 +67,21 @@ void write_scene(std::ostringstream& md, const BenchRun& run, const SceneRun& sc
     md << "| " << r.method << " | " << format_3g(t.median) << " | " << format_3g(t.min) << "–" << format_3g(t.max)
        << " | " << format_3g(r.timing.wall_ms.median) << " | " << format_3g(r.prepare_ms) << " | "
        << format_3g(r.comparison.rmse) << " | " << format_3g(r.comparison.rel_mse) << " | "
-       << format_3g(r.comparison.psnr) << " | " << optional_3g(r.comparison.ssim) << " | "
+       << format_3g(r.comparison.psnr) << " | " << format_3g(r.comparison.ssim) << " | "
        << format_3g(r.comparison.flip) << " | " << (row.on_front ? "●" : "") << " |\n";
   }
   md << "\n";
 }
 
-void write_stability(std::ostringstream& md, const BenchRun& run) {
+void write_markdown_stability(std::ostringstream& md, const BenchRun& run) {
   if (run.stability.empty()) return;
   md << "## Numerical stability of the math kernels\n\n"
      << "Worst error over each kernel's hard cases (– : not measured).\n\n"
      << "| kernel | hard cases | reference | error | f64 | f32 | GPU |\n|---|---|---|---|---|---|---|\n";
   for (const StabilityRow& row : run.stability)
     md << "| `" << row.kernel << "` | " << table_cell(row.domain) << " | " << table_cell(row.reference) << " | "
-       << table_cell(row.measure) << " | " << optional_3g(row.f64) << " | " << optional_3g(row.f32) << " | "
-       << optional_3g(row.gpu) << " |\n";
+       << table_cell(row.measure) << " | " << format_3g(row.f64) << " | " << format_3g(row.f32) << " | "
+       << format_3g(row.gpu) << " |\n";
   md << "\n";
 }
 
@@ -92,9 +90,9 @@ void write_stability(std::ostringstream& md, const BenchRun& run) {
 std::string report_markdown(const BenchRun& run) {
   std::ostringstream md;
   write_header(md, run);
-  write_headline(md, run);
-  for (const SceneRun& scene : run.scenes) write_scene(md, run, scene);
-  write_stability(md, run);
+  write_markdown_headline(md, run);
+  for (const SceneRun& scene : run.scenes) write_markdown_scene(md, run, scene);
+  write_markdown_stability(md, run);
   return md.str();
 }
 
