@@ -1,5 +1,6 @@
 #include "common/json_overrides.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 #include "common/error.hpp"
@@ -31,7 +32,7 @@ Json parse_value(const std::string& text) {
 // The quoted keys of `object`, comma-separated.
 std::string key_list(const Json& object) {
   std::string list;
-  for (const auto& [key, value] : object.items()) list += (list.empty() ? "\"" : ", \"") + key + "\"";
+  for (const auto& item : object.items()) list += (list.empty() ? "\"" : ", \"") + item.key() + "\"";
   return list;
 }
 
@@ -66,7 +67,7 @@ void apply_override(Json& document, const std::string& assignment, const std::st
     } else if (node->is_object()) {
       if (!node->contains(step) && !last) {
         std::vector<std::string> keys;
-        for (const auto& [key, value] : node->items()) keys.push_back(key);
+        for (const auto& item : node->items()) keys.push_back(item.key());
         const std::string near = nearest(step, keys);
         fail("\"" + step + "\" names nothing in " + where +
              (near.empty() ? " (keys there: " + key_list(*node) + ")" : " (did you mean \"" + near + "\"?)"));
