@@ -41,11 +41,11 @@ struct LoadedScene {
   std::string files_hash;  // the scene file and every file it references
 };
 
-LoadedScene load(const fs::path& file) {
+LoadedScene load(const fs::path& file, const std::vector<std::string>& overrides) {
   LoadedScene loaded;
   try {
-    loaded.scene = load_scene(file);
-    loaded.files_hash = scene_files_hash(file);
+    loaded.scene = load_scene(file, overrides);
+    loaded.files_hash = scene_files_hash(file, overrides);
   } catch (const Error& e) {
     loaded.scene.reset();
     loaded.error = e.what();
@@ -166,7 +166,8 @@ ManifestEntry render_item(frames::PreparedFrames& prepared, const Scene& scene, 
   const frames::Frame frame = prepared.render(camera, width, height, request);
   const frames::FrameFile file{root / item.output, job.pixel_type, job.exposure, job.preview};
   frames::write_frame(file, frame.image, frame.metadata);
-  ManifestEntry entry{job.scenes[item.scene].string(), item.method, item.frame, inputs_hash, {}, 0.0};
+  ManifestEntry entry{job.scenes[item.scene].string(), item.method, item.frame, inputs_hash, {}, 0.0,
+                      job.scene_overrides};
   entry.files[item.output] = file_hash(file.path);
   if (job.preview) {
     const std::string preview = fs::path(item.output).replace_extension(".png").string();
@@ -233,7 +234,7 @@ void render_pending(const Job& job, const fs::path& root, const std::vector<Load
 
 int run_batch(const BatchOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const Job job = load_job(options.job);
+  const Job job = load_job(options.job, options.overrides);
   const fs::path root = options.out_dir.empty() ? job.file.parent_path() : options.out_dir;
   const fs::path manifest_path = root / job.manifest;
   if (options.merge) return merge_shards(manifest_path);
@@ -241,7 +242,7 @@ int run_batch(const BatchOptions& options) {
 
   // Every shard loads every scene, so all derive the same item list.
   std::vector<LoadedScene> scenes;
-  for (const fs::path& file : job.scenes) scenes.push_back(load(file));
+  for (const fs::path& file : job.scenes) scenes.push_back(load(file, job.scene_overrides));
   ShardPlan plan = plan_shard(job, shard, scenes, root, manifest_path, options.facet_version);
   write_manifest(plan.manifest_path, plan.manifest);
 

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "vk/context.hpp"
 
@@ -11,6 +12,7 @@ namespace facet::batch {
 
 struct BatchOptions {
   std::filesystem::path job;
+  std::vector<std::string> overrides;  // --set: of the job's keys, or else of every scene's (load_job)
   std::string shard = "0/1";      // I/N: this process renders shard I of N
   bool merge = false;             // merge the shard manifests into the job's manifest instead of rendering
   std::filesystem::path out_dir;  // root of the outputs and the manifest; empty: the job file's directory

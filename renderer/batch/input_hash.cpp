@@ -2,14 +2,16 @@
 
 #include "common/content_hash.hpp"
 #include "common/error.hpp"
+#include "common/json_overrides.hpp"
 
 namespace facet::batch {
 
-std::string scene_files_hash(const std::filesystem::path& scene) {
+std::string scene_files_hash(const std::filesystem::path& scene, const std::vector<std::string>& overrides) {
   ContentHash hash;
   const std::filesystem::path directory = scene.lexically_normal().parent_path();
-  for (const auto& file : scene_dependencies(scene))
+  for (const auto& file : scene_dependencies(scene, overrides))
     hash.add_file(file, file.lexically_relative(directory).generic_string());
+  if (!overrides.empty()) hash.add("\nset " + overrides_text(overrides));  // none: the hashes made before --set
   return hash.hex();
 }
 

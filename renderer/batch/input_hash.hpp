@@ -3,15 +3,17 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "batch/items.hpp"
 #include "batch/job.hpp"
 
 namespace facet::batch {
 
-// The scene file and every file it references (scene_dependencies), each named relative to
-// the scene's directory, so moving the whole tree keeps the hash. Throws facet::Error if unreadable.
-std::string scene_files_hash(const std::filesystem::path& scene);
+// The scene file, its --set `overrides` and every file it references (scene_dependencies), each named
+// relative to the scene's directory, so moving the whole tree keeps the hash. Throws facet::Error if
+// unreadable.
+std::string scene_files_hash(const std::filesystem::path& scene, const std::vector<std::string>& overrides = {});
 
 // scene_files_hash + method + resolution + frame + the output settings + the renderer version; for
 // the "reference" method also its grid and seed.

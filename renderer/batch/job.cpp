@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +11,7 @@
 #include "batch/items.hpp"
 #include "common/error.hpp"
 #include "common/json_object_reader.hpp"
+#include "common/json_overrides.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace facet::batch {
@@ -45,6 +47,13 @@ std::vector<int> read_frames(JsonObjectReader& r) {
   return frames;
 }
 
+// The top-level keys load_job reads; no scene has any of them.
+bool is_job_key(const std::string& key) {
+  static const std::set<std::string> keys{"scenes",     "methods",  "frames",   "output",    "width",   "height",
+                                          "pixel_type", "preview", "exposure", "reference", "manifest"};
+  return keys.count(key) > 0;
+}
+
 void read_reference(JsonObjectReader r, Job& job) {
   job.grid = r.integer_in("grid", 1, 4096, job.grid);
   job.seed = r.integer_in("seed", 0, 2147483647, static_cast<int>(job.seed));
@@ -53,17 +62,22 @@ void read_reference(JsonObjectReader r, Job& job) {
 
 }  // namespace
 
-Job load_job(const std::filesystem::path& file) {
+Job load_job(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   std::ifstream in(file, std::ios::binary);
   std::error_code error;
   if (!in || std::filesystem::is_directory(file, error)) throw Error(file.string() + ": cannot open for reading");
-  const Json document =
-      Json::parse(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>(), nullptr, false);
+  Json document = Json::parse(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>(), nullptr, false);
   if (document.is_discarded()) throw Error(file.string() + ": invalid JSON");
 
-  JsonObjectReader r(document, file.string(), "");
   Job job;
   job.file = file;
+  for (const std::string& assignment : overrides) {
+    if (is_job_key(assignment.substr(0, assignment.find_first_of(".="))))
+      apply_override(document, assignment, file.string());
+    else
+      job.scene_overrides.push_back(assignment);
+  }
+  JsonObjectReader r(document, file.string(), "");
   const std::filesystem::path base = file.parent_path();
   for (const std::string& pattern : read_strings(r, "scenes")) {
     try {

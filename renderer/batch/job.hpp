@@ -23,9 +23,12 @@ struct Job {
   int grid = 32;                   // reference: N x N rays per pixel
   std::int64_t seed = 1;           // reference: jitter seed
   std::filesystem::path manifest;  // relative to the output root
+  std::vector<std::string> scene_overrides;  // the --set PATH=VALUE for every scene
 };
 
-// Reads and validates `file`; throws facet::Error with one line naming the file and key.
-Job load_job(const std::filesystem::path& file);
+// Reads `file`, applies the --set `overrides` whose first key is one of the job format's
+// ("width=320", "reference.grid=8"; common/json_overrides.hpp) and validates; the others are kept as
+// `scene_overrides` ("camera.fov_y=60"). Throws facet::Error with one line naming the file and key.
+Job load_job(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 
 }  // namespace facet::batch

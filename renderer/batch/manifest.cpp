@@ -19,14 +19,17 @@ using Json = nlohmann::json;
 constexpr int kManifestVersion = 1;
 
 Json to_json(const ManifestEntry& entry) {
-  return {{"scene", entry.scene}, {"method", entry.method},
-          {"frame", entry.frame}, {"inputs_hash", entry.inputs_hash},
-          {"files", entry.files}, {"render_ms", entry.render_ms}};
+  Json json = {{"scene", entry.scene}, {"method", entry.method},
+               {"frame", entry.frame}, {"inputs_hash", entry.inputs_hash},
+               {"files", entry.files}, {"render_ms", entry.render_ms}};
+  if (!entry.overrides.empty()) json["set"] = entry.overrides;
+  return json;
 }
 
 ManifestEntry from_json(const Json& json) {
   ManifestEntry entry;
   entry.scene = json.at("scene").get<std::string>();
+  if (json.contains("set")) entry.overrides = json.at("set").get<std::vector<std::string>>();
   entry.method = json.at("method").get<std::string>();
   // get<int>() of a double out of int range is undefined behaviour: only integers in range pass.
   const Json& frame = json.at("frame");

@@ -18,6 +18,7 @@ struct ManifestEntry {
   std::string inputs_hash;
   std::map<std::string, std::string> files;  // output root-relative path -> content hash (EXR, PNG preview)
   double render_ms = 0.0;                    // wall time of the item, for the record
+  std::vector<std::string> overrides;        // the --set applied to the scene ("set"; absent when none)
 };
 
 // Keyed by Item::output.

@@ -33,6 +33,8 @@ void add_batch_command(CLI::App& app, Action& action) {
   command->add_flag("--merge", batch.merge, "Merge the shard manifests into the job's manifest, then exit");
   command->add_option("--out-dir", batch.out_dir,
                       "Root of the job's relative output and manifest paths (default: the job file's directory)");
+  add_set_option(*command, batch.overrides,
+                 "the job (scenes, methods, width, reference.grid, ...) or else of every scene (camera.fov_y, ...)");
   add_device_options(*command, options->device);
   command->callback([&action, options] { action = [options] { return run_batch_command(*options); }; });
 }

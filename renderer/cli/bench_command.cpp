@@ -93,6 +93,7 @@ void add_bench_command(CLI::App& app, Action& action) {
   command->add_option("--height", bench.height, "Image height (default: the width at the scene's aspect)")
       ->check(CLI::Range(1, 16384));
   command->add_flag("--no-stability", options->no_stability, "Skip the kernel-stability section");
+  add_set_option(*command, bench.overrides, "every scene");
   add_device_options(*command, options->device);
   command->callback([&action, options] { action = [options] { return run_bench_command(*options); }; });
 }

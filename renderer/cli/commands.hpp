@@ -3,6 +3,8 @@
 #pragma once
 
 #include <functional>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -16,6 +18,10 @@ struct DeviceOptions {
   bool validation = false;
 };
 void add_device_options(CLI::App& command, DeviceOptions& options);
+
+// --set PATH=VALUE (repeatable): overrides of the keys of the files the command reads, `what` says which
+// (common/json_overrides.hpp).
+void add_set_option(CLI::App& command, std::vector<std::string>& overrides, const std::string& what);
 
 void add_render_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
@@ -17,6 +19,7 @@ namespace {
 
 struct ReferenceCommandOptions {
   std::filesystem::path scene;
+  std::vector<std::string> overrides;  // --set
   ResolutionOptions resolution;
   FrameOption frame;
   frames::FrameFile output;
@@ -25,7 +28,7 @@ struct ReferenceCommandOptions {
 
 int run_reference(const ReferenceCommandOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  Scene scene = load_scene(options.scene);
+  Scene scene = load_scene(options.scene, options.overrides);
   options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
 
@@ -66,6 +69,7 @@ void add_reference_command(CLI::App& app, Action& action) {
   command->add_option("--threads", options->reference.threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  add_set_option(*command, options->overrides, "the scene");
   add_resolution_options(*command, options->resolution);
   add_frame_option(*command, options->frame);
   add_output_options(*command, options->output);

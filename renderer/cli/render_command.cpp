@@ -24,6 +24,7 @@ namespace {
 
 struct RenderOptions {
   std::filesystem::path scene;
+  std::vector<std::string> overrides;  // --set
   DeviceOptions device;
   ResolutionOptions resolution;
   FrameOption frame;
@@ -72,7 +73,7 @@ void print_timings(const PhaseTimings& phases, double gpu_ms) {
 int run_render(const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   PhaseTimings phases;
-  Scene scene = timed(&phases, "load", [&] { return load_scene(options.scene); });
+  Scene scene = timed(&phases, "load", [&] { return load_scene(options.scene, options.overrides); });
   options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
   const gpu::RenderMethod method = render_method(options);
@@ -123,6 +124,7 @@ void add_render_command(CLI::App& app, Action& action) {
   command->add_flag("--timings", options->timings,
                     "Print the wall time of each phase (load, device, upload, diffraction, pipeline, jit, render, "
                     "write); they are also in the EXR metadata as facet:phase:<name>_ms");
+  add_set_option(*command, options->overrides, "the scene");
   add_resolution_options(*command, options->resolution);
   add_frame_option(*command, options->frame);
   add_output_options(*command, options->output);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.hpp"
+#include "common/json_overrides.hpp"
 
 namespace facet {
 
@@ -71,7 +72,8 @@ std::string ContentHash::hex() {
   return text;
 }
 
-std::vector<std::filesystem::path> scene_dependencies(const std::filesystem::path& scene_file) {
+std::vector<std::filesystem::path> scene_dependencies(const std::filesystem::path& scene_file,
+                                                      const std::vector<std::string>& overrides) {
   std::set<std::filesystem::path> found{scene_file.lexically_normal()};
   std::vector<std::filesystem::path> pending{scene_file.lexically_normal()};
   std::set<std::filesystem::path> parsed;
@@ -79,8 +81,10 @@ std::vector<std::filesystem::path> scene_dependencies(const std::filesystem::pat
     const std::filesystem::path file = pending.back();
     pending.pop_back();
     if (!parsed.insert(file).second || !is_json_file(file)) continue;
-    const nlohmann::json document = nlohmann::json::parse(read_bytes(file), nullptr, /*allow_exceptions=*/false);
+    nlohmann::json document = nlohmann::json::parse(read_bytes(file), nullptr, /*allow_exceptions=*/false);
     if (document.is_discarded()) continue;  // not JSON after all: hashed as bytes only
+    if (file == scene_file.lexically_normal())
+      for (const std::string& assignment : overrides) apply_override(document, assignment, file.string());
     std::set<std::filesystem::path> referenced;
     collect_file_strings(document, file.parent_path(), referenced);
     for (const auto& path : referenced)

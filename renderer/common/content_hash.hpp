@@ -28,7 +28,9 @@ class ContentHash {
 };
 
 // The scene file and every file it references, transitively: each string in a JSON file (the scene,
-// a glTF) that names an existing regular file relative to that file's directory. Sorted, unique.
-std::vector<std::filesystem::path> scene_dependencies(const std::filesystem::path& scene_file);
+// a glTF) that names an existing regular file relative to that file's directory, the scene read with
+// its --set `overrides` (a value may name a file). Sorted, unique.
+std::vector<std::filesystem::path> scene_dependencies(const std::filesystem::path& scene_file,
+                                                      const std::vector<std::string>& overrides = {});
 
 }  // namespace facet

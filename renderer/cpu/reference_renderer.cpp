@@ -42,11 +42,12 @@ class PixelIntegrator {
         camera_(camera_frame(scene.camera, options.width, options.height)),
         resolution_(options.width, options.height) {}
 
-  // The box-filtered mean over the N×N grid of pixel (x, y).
-  glm::dvec3 pixel(int x, int y) const {
+  // The box-filtered mean over the N×N grid of pixel (x, y): radiance in rgb, coverage (the fraction of
+  // the rays that hit geometry) in a.
+  glm::dvec4 pixel(int x, int y) const {
     const int n = options_.grid;
     const auto index = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(options_.width) + x;
-    glm::dvec3 sum(0.0);
+    glm::dvec4 sum(0.0);
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < n; ++i) {
         const glm::dvec2 offset = options_.jitter
@@ -72,24 +73,29 @@ class PixelIntegrator {
     return (static_cast<double>(stratum) + jitter) / static_cast<double>(strata);
   }
 
-  glm::dvec3 radiance(glm::dvec3 d, double wavelength_u) const {
+  // Radiance along d (rgb), and 1 if it hit geometry, else 0 (a).
+  glm::dvec4 radiance(glm::dvec3 d, double wavelength_u) const {
     const auto hit = world_.intersect(camera_.origin, d);
-    if (!hit) return scene_.background;
+    return hit ? glm::dvec4(shade(*hit, d, wavelength_u), 1.0) : glm::dvec4(scene_.background, 0.0);
+  }
+
+  // Radiance leaving `hit` along -d.
+  glm::dvec3 shade(const SurfaceHit& hit, glm::dvec3 d, double wavelength_u) const {
     const glm::dvec3 l = scene_.light.direction;
     const double visibility =
-        glm::dot(hit->normal, l) > 0.0 && world_.occluded(world_.shadow_origin(*hit), l) ? 0.0 : 1.0;
-    const Material& material = scene_.materials[hit->material];
-    if (!hit->micro) {
-      glm::dvec3 c = shade_macro_surface(scene_, material, hit->normal, -d, hit->uv, visibility);
-      if (diffracted_.handles(hit->material))
-        c += diffracted_.radiance_at(hit->material, hit->normal, hit->dpdu, -d, visibility, wavelength_u);
+        glm::dot(hit.normal, l) > 0.0 && world_.occluded(world_.shadow_origin(hit), l) ? 0.0 : 1.0;
+    const Material& material = scene_.materials[hit.material];
+    if (!hit.micro) {
+      glm::dvec3 c = shade_macro_surface(scene_, material, hit.normal, -d, hit.uv, visibility);
+      if (diffracted_.handles(hit.material))
+        c += diffracted_.radiance_at(hit.material, hit.normal, hit.dpdu, -d, visibility, wavelength_u);
       return c;
     }
     const auto& m = std::get<MicrosurfaceMaterial>(material);
-    glm::dvec3 c = k::lambert_radiance(microsurface_albedo(m, hit->height, hit->slope), hit->normal, l,
+    glm::dvec3 c = k::lambert_radiance(microsurface_albedo(m, hit.height, hit.slope), hit.normal, l,
                                        scene_.light.irradiance, visibility, scene_.ambient);
     if (m.specular)
-      c += beckmann_specular_radiance(*m.specular, hit->normal, hit->tangent, -d, l, scene_.light.irradiance,
+      c += beckmann_specular_radiance(*m.specular, hit.normal, hit.tangent, -d, l, scene_.light.irradiance,
                                       visibility);
     return c;
   }
@@ -127,6 +133,7 @@ Image render_reference(const Scene& scene, const ReferenceOptions& options) {
   const auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed); };
 
   Image image(options.width, options.height);
+  image.alpha.resize(image.pixel_count());
   std::mutex progress_mutex;
   std::int64_t done = 0;
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
@@ -137,8 +144,11 @@ Image render_reference(const Scene& scene, const ReferenceOptions& options) {
           for (std::int64_t tile = range.begin(); tile != range.end(); ++tile) {
             const int x0 = static_cast<int>(tile % tiles_x) * ts, y0 = static_cast<int>(tile / tiles_x) * ts;
             for (int y = y0; y < std::min(y0 + ts, options.height) && !cancelled(); ++y)
-              for (int x = x0; x < std::min(x0 + ts, options.width); ++x)
-                image.set(x, y, glm::vec3(integrator.pixel(x, y)));
+              for (int x = x0; x < std::min(x0 + ts, options.width); ++x) {
+                const glm::dvec4 pixel = integrator.pixel(x, y);
+                image.set(x, y, glm::vec3(pixel));
+                image.alpha[image.index(x, y)] = static_cast<float>(pixel.a);
+              }
             if (options.progress) {
               const std::lock_guard lock(progress_mutex);
               options.progress(++done, tiles);

@@ -1,5 +1,6 @@
 #include "frames/frame_metadata.hpp"
 
+#include "common/json_overrides.hpp"
 #include "scene/camera_matrices.hpp"
 #include "scene/grating/diffraction_method.hpp"
 
@@ -23,11 +24,13 @@ constexpr ExrChromaticities kRec709{{0.64f, 0.33f}, {0.30f, 0.60f}, {0.15f, 0.06
 
 ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::int64_t samples_per_pixel,
                            const std::string& device) {
-  return {{"facet:scene", scene.source.string()},
-          {"facet:method", method},
-          {"facet:spp", samples_per_pixel},
-          {"facet:device", device},
-          {"facet:version", std::string(FACET_VERSION)}};
+  ExrMetadata metadata{{"facet:scene", scene.source.string()},
+                       {"facet:method", method},
+                       {"facet:spp", samples_per_pixel},
+                       {"facet:device", device},
+                       {"facet:version", std::string(FACET_VERSION)}};
+  if (!scene.overrides.empty()) metadata["facet:set"] = overrides_text(scene.overrides);
+  return metadata;
 }
 
 void add_timings(ExrMetadata& metadata, std::optional<double> gpu_ms, double wall_ms) {

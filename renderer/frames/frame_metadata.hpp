@@ -14,7 +14,8 @@
 
 namespace facet::frames {
 
-// facet:scene, facet:method, facet:spp, facet:device, facet:version.
+// facet:scene, facet:method, facet:spp, facet:device, facet:version, and facet:set (the scene's --set
+// overrides as a JSON array of the PATH=VALUE texts) when it has any.
 ExrMetadata frame_metadata(const Scene& scene, const std::string& method, std::int64_t samples_per_pixel,
                            const std::string& device);
 

@@ -150,7 +150,8 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   buffers_.set_camera(*scene_, camera, width, height);
   const std::vector<const vk::Buffer*> bindings = this->bindings();
   Image image(width, height);
-  std::vector<vec4> tile_rgba(static_cast<size_t>(tile_size_) * tile_size_);
+  image.alpha.resize(image.pixel_count());
+  std::vector<vec4> tile_rgba(static_cast<size_t>(tile_size_) * tile_size_);  // a: coverage
   RenderStats local;
   const int tiles = tile_count(width, height, tile_size_);
   for (int y0 = 0; y0 < height; y0 += tile_size_)
@@ -160,7 +161,11 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
         local.gpu_ms += dispatch_tile(bindings, x0, y0, w, h, s);      // accumulated in pixels_
       pixels_.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);
       for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) image.set(x0 + x, y0 + y, glm::vec3(tile_rgba[static_cast<size_t>(y) * w + x]));
+        for (int x = 0; x < w; ++x) {
+          const vec4 pixel = tile_rgba[static_cast<size_t>(y) * w + x];
+          image.set(x0 + x, y0 + y, glm::vec3(pixel));
+          image.alpha[image.index(x0 + x, y0 + y)] = pixel.a;
+        }
       ++local.tiles;
       if (progress) progress(local.tiles, tiles);
     }

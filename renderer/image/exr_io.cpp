@@ -55,6 +55,12 @@ void check_writable(const Image& image, ExrPixelType type, NonFinite non_finite)
                              std::to_string(image.height) + ")");
   if (image.rgb.size() != 3 * image.pixel_count())
     throw std::runtime_error("image has " + std::to_string(image.rgb.size()) + " floats, expected 3 per pixel");
+  if (!image.alpha.empty() && image.alpha.size() != image.pixel_count())
+    throw std::runtime_error("image has " + std::to_string(image.alpha.size()) + " alpha values, expected 1 per pixel");
+  for (std::size_t i = 0; i < image.alpha.size(); ++i)
+    if (!(image.alpha[i] >= 0.0f && image.alpha[i] <= 1.0f))
+      throw std::runtime_error("pixel (" + std::to_string(i % image.width) + ", " + std::to_string(i / image.width) +
+                               ") coverage " + std::to_string(image.alpha[i]) + " is outside [0, 1]");
   if (non_finite == NonFinite::Allow) return;
   // Half rounds |v| >= 65520 (the midpoint above the largest half, 65504) to infinity.
   const float limit = type == ExrPixelType::Half ? 65520.0f : std::numeric_limits<float>::infinity();
@@ -183,8 +189,9 @@ void write_exr(const std::filesystem::path& path, const Image& image, const ExrM
     insert_metadata(header, metadata);
     // OpenEXR converts pixel types when reading but not when writing, so half data is rounded here
     // (Imath: round to nearest, ties to even).
-    std::vector<Imath::half> halves;
+    std::vector<Imath::half> halves, alpha_halves;
     if (type == ExrPixelType::Half) halves.assign(image.rgb.begin(), image.rgb.end());
+    if (type == ExrPixelType::Half) alpha_halves.assign(image.alpha.begin(), image.alpha.end());
     const Imf::PixelType pixel_type = type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
     const std::size_t sample_size = type == ExrPixelType::Half ? sizeof(Imath::half) : sizeof(float);
     const char* base = type == ExrPixelType::Half ? reinterpret_cast<const char*>(halves.data())
@@ -195,6 +202,12 @@ void write_exr(const std::filesystem::path& path, const Image& image, const ExrM
       header.channels().insert(names[c], Imf::Channel(pixel_type));
       frame.insert(names[c], Imf::Slice::Make(pixel_type, base + c * sample_size, header.dataWindow(), 3 * sample_size,
                                               3 * sample_size * image.width));
+    }
+    if (!image.alpha.empty()) {
+      const char* alpha = type == ExrPixelType::Half ? reinterpret_cast<const char*>(alpha_halves.data())
+                                                     : reinterpret_cast<const char*>(image.alpha.data());
+      header.channels().insert("A", Imf::Channel(pixel_type));
+      frame.insert("A", Imf::Slice::Make(pixel_type, alpha, header.dataWindow(), sample_size, sample_size * image.width));
     }
     StdioOStream stream(file);
     Imf::OutputFile output(stream, header);

@@ -33,7 +33,8 @@ enum class ExrPixelType { Half, Float };
 // is an error. Allow: written as is, e.g. to inspect a broken render.
 enum class NonFinite { Reject, Allow };
 
-// Writes channels R, G, B (ZIP compression) atomically: on failure the destination is untouched.
+// Writes channels R, G, B, and A when the image has coverage (which must lie in [0, 1]), with ZIP
+// compression, atomically: on failure the destination is untouched.
 void write_exr(const std::filesystem::path& path, const Image& image, const ExrMetadata& metadata, ExrPixelType type,
                NonFinite non_finite = NonFinite::Reject);
 

@@ -13,10 +13,12 @@ namespace facet {
 // before any pixel is allocated (docs/limits.md). 16384^2 RGB floats are 3 GiB.
 inline constexpr int kMaxImageFileSide = 16384;
 
-// Scene-linear RGB, 3 floats per pixel.
+// Scene-linear RGB, 3 floats per pixel, and optionally the coverage of each pixel: the fraction of its
+// samples that hit geometry (0 background, 1 covered), written as the EXR's A channel.
 struct Image {
   int width = 0, height = 0;
   std::vector<float> rgb;
+  std::vector<float> alpha;  // one per pixel, row-major; empty: no A channel
 
   Image() = default;
   Image(int width_, int height_, glm::vec3 fill = glm::vec3(0.0f))

@@ -4,8 +4,9 @@ namespace facet::report {
 
 nlohmann::json to_json(const BenchRecord& r) {
   nlohmann::json json = {
-      {"scene", r.scene},   {"scene_file", r.scene_file}, {"method", r.method},   {"width", r.width},
-      {"height", r.height}, {"device", r.device},         {"machine", r.machine}, {"facet_version", r.facet_version}};
+      {"scene", r.scene},   {"scene_file", r.scene_file}, {"set", r.overrides},   {"method", r.method},
+      {"width", r.width},   {"height", r.height},         {"device", r.device},   {"machine", r.machine},
+      {"facet_version", r.facet_version}};
   if (r.error) {
     json["error"] = *r.error;
     return json;

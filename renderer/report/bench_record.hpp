@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +19,7 @@ struct BenchRecord {
   std::string method;
   int width = 0, height = 0;
   std::string device, machine, facet_version;
+  std::vector<std::string> overrides;  // --set of the scene, as given
   std::optional<std::string> error;  // set: the method failed; no timing, metrics or images
   Timing timing;
   double prepare_ms = 0.0;  // wall time of preparing the method and rendering its first (warm-up) frame
@@ -29,7 +31,8 @@ struct BenchRecord {
   double time_ms() const { return timing.headline().median; }
 };
 
-// Keys: scene, scene_file, method, width, height, device, machine, facet_version and either
+// Keys: scene, scene_file, set (the --set overrides, [] if none), method, width, height, device, machine,
+// facet_version and either
 // error, or time_ms (median; device time when there is one, else wall), time_ms_min, time_ms_max,
 // time_source ("gpu" | "wall"), wall_ms (median), wall_ms_min, wall_ms_max, gpu_ms (median or null),
 // repeats, prepare_ms, phases ({name: wall ms}), the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim, flip), image, heatmap.

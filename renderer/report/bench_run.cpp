@@ -98,10 +98,11 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   base.device = bench.device;
   base.machine = bench.machine;
   base.facet_version = bench.facet_version;
+  base.overrides = bench.overrides;
   Scene scene;
   CachedReference reference;
   try {
-    scene = load_scene(run.scene_file);
+    scene = load_scene(run.scene_file, bench.overrides);
     std::tie(run.width, run.height) = resolution(options, scene.camera);
     std::unique_ptr<ProgressBar> bar;
     frames::PreparedFrames reference_frames(
@@ -112,7 +113,7 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
       bar->update(done);
     };
     reference = cached_reference(
-        cache_dir, {run.scene_file, bench.facet_version, run.width, run.height, bench.grid, bench.seed},
+        cache_dir, {run.scene_file, bench.facet_version, run.width, run.height, bench.grid, bench.seed, bench.overrides},
         [&] { return reference_frames.render(scene.camera, run.width, run.height, request).image; });
     if (bar) bar->finish();
     std::filesystem::create_directories(options.out_dir / run.name);
@@ -174,6 +175,7 @@ BenchRun run_bench(const BenchOptions& options) {
   bench.grid = options.grid > 0 ? options.grid : options.quick ? 8 : 32;
   bench.repeats = options.repeats > 0 ? options.repeats : options.quick ? 2 : 5;
   bench.seed = options.seed;
+  bench.overrides = options.overrides;
   vk::Context context(options.device);
   bench.device = context.info().name;
   const std::filesystem::path cache_dir = options.cache_dir.empty() ? options.out_dir / "cache" : options.cache_dir;

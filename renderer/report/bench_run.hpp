@@ -24,6 +24,7 @@ struct BenchOptions {
   int repeats = 0;                  // timed runs per method; 0: 2 quick, 5 full
   std::uint64_t seed = 1;
   std::vector<std::string> methods;  // empty: the catalogue's applicable ones
+  std::vector<std::string> overrides;  // --set PATH=VALUE, applied to every scene
   bool kernel_stability = true;
   std::string facet_version;
   vk::ContextOptions device;
@@ -44,6 +45,7 @@ struct BenchRun {
   bool quick = false;
   int grid = 0, repeats = 0;
   std::uint64_t seed = 1;
+  std::vector<std::string> overrides;  // --set, as given
   std::vector<SceneRun> scenes;
   std::vector<BenchRecord> records;
   std::vector<StabilityRow> stability;

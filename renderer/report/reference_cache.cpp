@@ -4,6 +4,7 @@
 
 #include "common/content_hash.hpp"
 #include "common/error.hpp"
+#include "common/json_overrides.hpp"
 #include "image/exr_io.hpp"
 
 namespace facet::report {
@@ -35,8 +36,9 @@ std::string reference_cache_key(const ReferenceKey& key) {
   ContentHash hash;
   hash.add("facet reference cache v1\n");
   const std::filesystem::path base = key.scene_file.lexically_normal().parent_path();
-  for (const auto& file : scene_dependencies(key.scene_file))
+  for (const auto& file : scene_dependencies(key.scene_file, key.overrides))
     hash.add_file(file, file.lexically_relative(base).generic_string());
+  if (!key.overrides.empty()) hash.add("\nset " + overrides_text(key.overrides));  // none: the keys made before --set
   hash.add("\nversion " + key.renderer_version + "\nsize " + std::to_string(key.width) + "x" +
            std::to_string(key.height) + "\ngrid " + std::to_string(key.grid) + "\nseed " + std::to_string(key.seed));
   return hash.hex();

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "image/image.hpp"
 
@@ -18,10 +19,11 @@ struct ReferenceKey {
   int width = 0, height = 0;
   int grid = 0;
   std::uint64_t seed = 0;
+  std::vector<std::string> overrides;  // --set of the scene
 };
 
-// Hex digest of the scene file, every file it references (named relative to the scene's folder, so
-// a moved checkout still hits), the renderer version, the resolution, the grid and the seed.
+// Hex digest of the scene file, its overrides, every file it references (named relative to the scene's
+// folder, so a moved checkout still hits), the renderer version, the resolution, the grid and the seed.
 std::string reference_cache_key(const ReferenceKey& key);
 
 struct CachedReference {

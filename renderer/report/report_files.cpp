@@ -72,6 +72,7 @@ nlohmann::json run_json(const BenchRun& run) {
           {"grid", run.grid},
           {"repeats", run.repeats},
           {"seed", run.seed},
+          {"set", run.overrides},
           {"scenes", scenes},
           {"kernel_stability", stability},
           {"exit_status", run.exit_status()}};

@@ -157,6 +157,7 @@ struct Mesh {
 
 struct Scene {
   std::filesystem::path source;  // the scene file, for metadata and relative paths
+  std::vector<std::string> overrides;  // the --set PATH=VALUE applied to it, as given (facet:set)
   Camera camera;
   std::optional<CameraPath> camera_path;  // frames of an animation; absent: one frame, `camera`
   DirectionalLight light;

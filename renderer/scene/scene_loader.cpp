@@ -10,6 +10,7 @@
 
 #include "common/error.hpp"
 #include "common/json_object_reader.hpp"
+#include "common/json_overrides.hpp"
 #include "scene/camera_path.hpp"
 #include "scene/diffraction_material_reader.hpp"
 #include "scene/gltf_loader.hpp"
@@ -254,7 +255,7 @@ Scene parse_scene(const Json& document, const std::filesystem::path& source) {
   return scene;
 }
 
-Scene load_scene(const std::filesystem::path& file) {
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   std::ifstream in(file, std::ios::binary);
   std::error_code ec;
   if (!in || std::filesystem::is_directory(file, ec)) {
@@ -283,7 +284,10 @@ Scene load_scene(const std::filesystem::path& file) {
   } catch (const Error& e) {
     throw Error(display_name(file) + ": invalid JSON: " + e.what());
   }
-  return parse_scene(document, file);
+  for (const std::string& assignment : overrides) apply_override(document, assignment, display_name(file));
+  Scene scene = parse_scene(document, file);
+  scene.overrides = overrides;
+  return scene;
 }
 
 }  // namespace facet

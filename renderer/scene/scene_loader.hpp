@@ -5,6 +5,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -15,8 +17,9 @@ namespace facet {
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr int kMaxJsonDepth = 64;
 
-// Reads, parses and validates `file`; mesh paths are relative to its directory.
-Scene load_scene(const std::filesystem::path& file);
+// Reads and parses `file`, applies `overrides` ("camera.width=320", common/json_overrides.hpp) in
+// order, then validates; mesh paths are relative to its directory.
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 
 // Validates an already parsed document; `source` names it in messages and anchors
 // relative mesh paths (an empty source means the current directory).

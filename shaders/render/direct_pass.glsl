@@ -102,13 +102,13 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb) + diffracted;
 }
 
-// Radiance along the camera ray through `film`.
-vec3 radiance(vec2 film, float pixel_step) {
+// Radiance along the camera ray through `film` (rgb), and 1 if it hit geometry, 0 if not (a: coverage).
+vec4 radiance(vec2 film, float pixel_step) {
   vec3 o = globals.camera_origin.xyz;
   vec3 d = camera_ray(film);
   Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields, kTextureMethod >= 3u,
                   camera_ray(film + vec2(pixel_step, 0.0)), camera_ray(film + vec2(0.0, pixel_step)));
-  return shade(o, d, hit, film, pixel_step);
+  return vec4(shade(o, d, hit, film, pixel_step), hit.material == kNoHit ? 0.0 : 1.0);
 }
 
 // The tile position of this invocation: its workgroup renders block g s mod n (g: the workgroup's
@@ -126,12 +126,12 @@ void main() {
   if (at.x >= tile.rect.z || at.y >= tile.rect.w) return;
   uint k = tile.stratum.w;
   float step = 1.0 / float(k);
-  vec3 sample_radiance = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
+  vec4 sample_value = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
   // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
   // end: the same float operations as averaging them within one invocation.
   uint i = at.y * tile.rect.z + at.x;
-  vec3 sum = tile.stratum.z != 0u ? pixels[i].rgb + sample_radiance : sample_radiance;
-  pixels[i] = vec4(tile.stratum.z == k * k - 1u ? sum / float(k * k) : sum, 1.0);
+  vec4 sum = tile.stratum.z != 0u ? pixels[i] + sample_value : sample_value;
+  pixels[i] = tile.stratum.z == k * k - 1u ? sum / float(k * k) : sum;
 }
 
 #endif

@@ -362,6 +362,28 @@ TEST_F(Batch, DiffractionFramesCarryTheDiffractionMetadataOfRender) {
   EXPECT_GT(std::get<std::int64_t>(from_batch.at("facet:taylor_terms")), 0);
 }
 
+// --set of a job key changes the job, of any other key every scene; the manifest records the scene's
+// overrides and they are part of the inputs hash: the same overrides skip, other ones re-render.
+TEST_F(Batch, SetOverridesJobAndSceneKeysAndTheManifestRecordsThem) {
+  const fs::path job_file = job(R"(["scenes/ball.json"])", R"(["reference"])", 1);
+  const fs::path out = dir_ / "out_root";
+  const std::string red = "--set width=20 --set height=10 --set 'background=[1, 0, 0]'";
+  const auto first = batch(job_file, out, red);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  ExrMetadata metadata;
+  const Image image = read_exr(out / "out/ball/reference/00.exr", &metadata);
+  EXPECT_EQ(image.width, 20);
+  EXPECT_EQ(image.height, 10);
+  EXPECT_EQ(std::get<std::string>(metadata.at("facet:set")), R"(["background=[1, 0, 0]"])");
+  EXPECT_EQ(image.at(0, 0), glm::vec3(1, 0, 0));  // the top-left corner sees the sky
+  const nlohmann::json items = manifest_items(out / "job.manifest.json");
+  ASSERT_EQ(items.size(), 1u);
+  EXPECT_EQ(items.begin()->at("set"), nlohmann::json::array({"background=[1, 0, 0]"}));
+  EXPECT_EQ(totals(batch(job_file, out, red).err), (Totals{0, 1, 0, 0}));
+  EXPECT_EQ(totals(batch(job_file, out, "--set width=20 --set height=10 --set 'background=[0, 1, 0]'").err),
+            (Totals{1, 0, 0, 0}));
+}
+
 TEST(BatchExamples, TheShippedJobsParseAndNameExistingScenes) {
   const fs::path examples = fs::path(FACET_SOURCE_DIR) / "examples";
   size_t jobs = 0;

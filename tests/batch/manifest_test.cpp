@@ -14,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 ManifestEntry entry(const std::string& scene, int frame, const std::string& hash) {
-  return {scene, "naive", frame, hash, {{"out/" + std::to_string(frame) + ".exr", "h" + hash}}, 12.5};
+  return {scene, "naive", frame, hash, {{"out/" + std::to_string(frame) + ".exr", "h" + hash}}, 12.5, {}};
 }
 
 void expect_same(const Manifest& a, const Manifest& b) {

@@ -56,7 +56,7 @@ TEST_F(Cli, RendersTheDefaultSceneToExrAndPng) {
   // A third-party reader sees the same file and its metadata.
   auto info = run_command("oiiotool --info -v " + out.string());
   ASSERT_EQ(info.exit_code, 0) << info.err;
-  EXPECT_NE(info.out.find(":   64 x   36, 3 channel"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find(":   64 x   36, 4 channel"), std::string::npos) << info.out;  // R, G, B, A (coverage)
   EXPECT_NE(info.out.find("facet:method: \"naive\""), std::string::npos) << info.out;
 }
 

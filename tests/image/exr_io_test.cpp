@@ -87,6 +87,24 @@ TEST(ExrIo, FloatRoundTripIsExact) {
   }
 }
 
+// Coverage is the A channel, in half and float alike (its fractions of K^2 samples are exact in
+// both); an image without it has no A, and coverage outside [0, 1] is refused.
+TEST(ExrIo, CoverageIsTheAChannel) {
+  TempDir dir;
+  Image image(3, 2, glm::vec3(0.5f));
+  image.alpha = {0.0f, 0.25f, 1.0f, 1.0f / 64.0f, 0.5f, 0.75f};
+  for (const ExrPixelType type : {ExrPixelType::Half, ExrPixelType::Float}) {
+    write_exr(dir / "a.exr", image, {}, type);
+    EXPECT_EQ(read_exr_scalar(dir / "a.exr", "A").values, image.alpha);
+    EXPECT_EQ(read_exr(dir / "a.exr").rgb, image.rgb);
+  }
+  write_exr(dir / "rgb.exr", Image(3, 2), {}, ExrPixelType::Half);
+  EXPECT_THROW(read_exr_scalar(dir / "rgb.exr", "A"), Error);
+  image.alpha[4] = 1.5f;
+  EXPECT_THROW(write_exr(dir / "bad.exr", image, {}, ExrPixelType::Float), Error);
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.exr"));
+}
+
 TEST(ExrIo, HalfRoundTripMatchesHalfRounding) {
   TempDir dir;
   const Image image = awkward_image();

@@ -171,6 +171,22 @@ TEST_F(Bench, ReferenceCacheHitsUntilTheSceneChanges) {
   EXPECT_TRUE(reference_cache_hit());
 }
 
+// --set overrides every scene before its reference: an overridden scene has a reference of its own
+// (cached under its overrides), and both results.json and run.json record the overrides.
+TEST_F(Bench, SetOverridesTheScenesAndIsRecorded) {
+  write_scene();
+  ASSERT_EQ(bench("--no-stability --methods naive").exit_code, 0);
+  const std::string with_set = "--no-stability --methods naive --set 'ambient=[0.31, 0.3, 0.3]'";
+  const auto r = bench(with_set);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(reference_cache_hit());
+  const json set = json::array({"ambient=[0.31, 0.3, 0.3]"});
+  EXPECT_EQ(read_json("results.json")[0]["set"], set);
+  EXPECT_EQ(read_json("run.json")["set"], set);
+  ASSERT_EQ(bench(with_set).exit_code, 0);
+  EXPECT_TRUE(reference_cache_hit());
+}
+
 TEST_F(Bench, ABrokenSceneFailsTheRunButNotTheOtherScenes) {
   write_scene();
   std::ofstream(dir_ / "broken.json") << "{\"camera\": ";

@@ -194,7 +194,7 @@ TEST(ReferenceCacheKey, CoversEveryReferencedFileAndSetting) {
   const auto deps = scene_dependencies(dir / "scene.json");
   EXPECT_EQ(deps,
             (std::vector<std::filesystem::path>{dir / "meshes/m.bin", dir / "meshes/m.gltf", dir / "scene.json"}));
-  const ReferenceKey key{dir / "scene.json", "1.0", 48, 27, 4, 1};
+  const ReferenceKey key{dir / "scene.json", "1.0", 48, 27, 4, 1, {}};
   const std::string base = reference_cache_key(key);
   EXPECT_EQ(base.size(), 32u);
   EXPECT_EQ(reference_cache_key(key), base);
