@@ -28,7 +28,7 @@ struct PreintegratedDomain {
 PreintegratedDomain domain_of_directions(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs);
 
 struct PreintegrationSettings {
-  double tolerance = 1e-2;                     // bilinear-interpolation error relative to the local envelope (eq. F.6)
+  double tolerance = 1e-2;  // bilinear-interpolation error relative to the local envelope (eq. F.6)
   // The device memory the tables may take: the render pass passes its heap (lavapipe: one of 2 GiB),
   // or what its word bindings hold if less, minus earlier materials' tables (gpu/diffraction_upload.cpp).
   std::uint64_t max_bytes = 2147483648;

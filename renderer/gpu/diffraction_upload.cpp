@@ -46,9 +46,9 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
   int most_wavelengths = 0, most_taylor = 0;
   // The preintegrated tables may take the device's memory, or what the pass's word bindings hold if less.
   const std::uint64_t binding_words = preintegrated_binding_words(context, settings.preintegrated_binding_bytes);
-  const std::uint64_t table_memory = std::min<std::uint64_t>(vk::memory_limits(context.physical_device()).heap_bytes,
-                                                             sizeof(std::uint32_t) * binding_words *
-                                                                 FACET_RENDER_PREINTEGRATED_SLICES);
+  const std::uint64_t table_memory =
+      std::min<std::uint64_t>(vk::memory_limits(context.physical_device()).heap_bytes,
+                              sizeof(std::uint32_t) * binding_words * FACET_RENDER_PREINTEGRATED_SLICES);
   const diffraction::DiffractionMethod method = scene_diffraction_method(scene, settings);
   const auto all = diffraction::prepare_scene_diffraction(scene, settings);
   for (size_t i = 0; i < all.size(); ++i) {

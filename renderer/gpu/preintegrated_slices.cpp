@@ -25,11 +25,12 @@ PreintegratedSlices slice_preintegrated_words(std::uint64_t words, std::uint64_t
   const std::uint64_t count = slice > 0 ? (words + slice - 1) / slice : UINT64_MAX;
   if (count > FACET_RENDER_PREINTEGRATED_SLICES || slice > UINT32_MAX)
     throw Error("the preintegrated tables (" + format_mib(4 * words) + ") need more than the render pass's " +
-                std::to_string(FACET_RENDER_PREINTEGRATED_SLICES) + " texel bindings of " + format_mib(4 * binding_words) +
-                " each (one cell row spans " + format_mib(4 * overlap_words) + ")");
+                std::to_string(FACET_RENDER_PREINTEGRATED_SLICES) + " texel bindings of " +
+                format_mib(4 * binding_words) + " each (one cell row spans " + format_mib(4 * overlap_words) + ")");
   s.count = static_cast<std::uint32_t>(count);
   s.slice_words = static_cast<std::uint32_t>(slice);
-  for (std::uint64_t j = 0; j < count; ++j) s.ranges.emplace_back(j * slice, std::min(words, j * slice + binding_words));
+  for (std::uint64_t j = 0; j < count; ++j)
+    s.ranges.emplace_back(j * slice, std::min(words, j * slice + binding_words));
   return s;
 }
 
