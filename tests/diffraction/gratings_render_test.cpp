@@ -1,6 +1,6 @@
 // The binary and the rotated crossed grating of scenes/ (issue 20; at the scenes' full view their
-// `preintegrated` tables took 285 and 211.5 MiB, refused before tables could pass 128 MiB) render with
-// `preintegrated` and agree with `spectral` on the same scene. The tests narrow the view and use 16
+// `preintegrated` tables take 258 and 218 MiB, refused while tables could not pass 128 MiB) render
+// with `preintegrated` and agree with `spectral` on the same scene. The tests narrow the view and use 16
 // wavelengths so that the tables build in a few seconds; both paths integrate the same samples.
 #include <gtest/gtest.h>
 
