@@ -14,7 +14,7 @@ layout(push_constant) uniform Probe {
   float R0;
   uint count;
 } probe;
-uint diffraction_preintegrated_word(uint i) { return diffraction_preintegrated_words[i]; }
+uint diffraction_preintegrated_word(uint cell_word, uint i) { return diffraction_preintegrated_words[i]; }
 float diffraction_preintegrated_scale(uint i) { return diffraction_preintegrated_scales[i]; }
 
 #include "render/diffraction_preintegrated.glsl"

@@ -5,11 +5,11 @@
 #include <complex>
 #include <limits>
 #include <numbers>
-#include <sstream>
 
 #include <tbb/parallel_for.h>
 
 #include "common/error.hpp"
+#include "common/format_mib.hpp"
 #include "kernels/shared.hpp"
 
 namespace facet::diffraction {
@@ -139,13 +139,6 @@ PreintegratedGrid kernel_grid(const PreintegratedTables& t) {
   return PreintegratedGrid(t.origin, t.spacing, t.nu, t.nv, t.terms, t.words);
 }
 
-std::string mib(std::uint64_t bytes) {
-  std::ostringstream s;
-  s.precision(1);
-  s << std::fixed << bytes / 1048576.0 << " MiB";
-  return s.str();
-}
-
 }  // namespace
 
 PreintegratedDomain domain_of_directions(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs) {
@@ -192,11 +185,11 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
                                                const PreintegratedDomain& domain,
                                                const PreintegrationSettings& settings) {
   const PreintegratedLayout l = preintegrated_layout(tables, samples, domain, settings);
-  if (l.bytes > settings.max_buffer_bytes)
+  if (l.bytes > settings.max_bytes)
     throw Error("preintegrated tables: " + std::to_string(l.nu) + " x " + std::to_string(l.nv) + " (u, v) nodes x " +
-                std::to_string(l.terms) + " terms need " + mib(l.bytes) +
-                ", more than the device's storage-buffer range of " + mib(settings.max_buffer_bytes) +
-                "; narrow the view, raise the tolerance or use --diffraction spectral");
+                std::to_string(l.terms) + " terms need " + format_mib(l.bytes) + ", more than the " +
+                format_mib(settings.max_bytes) +
+                " of device memory left for them; narrow the view, raise the tolerance or use --diffraction spectral");
   PreintegratedTables t;
   t.origin = l.origin;
   t.spacing = l.spacing;

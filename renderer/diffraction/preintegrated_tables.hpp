@@ -28,8 +28,10 @@ struct PreintegratedDomain {
 PreintegratedDomain domain_of_directions(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs);
 
 struct PreintegrationSettings {
-  double tolerance = 1e-2;                     // bilinear-interpolation error relative to the local envelope (eq. F.6)
-  std::uint64_t max_buffer_bytes = 134217728;  // the device's maxStorageBufferRange (lavapipe: 128 MiB)
+  double tolerance = 1e-2;  // bilinear-interpolation error relative to the local envelope (eq. F.6)
+  // The device memory the tables may take: the render pass passes its heap (lavapipe: one of 2 GiB),
+  // or what its word bindings hold if less, minus earlier materials' tables (gpu/diffraction_upload.cpp).
+  std::uint64_t max_bytes = 2147483648;
 };
 
 struct PreintegratedTables {
@@ -61,7 +63,7 @@ struct PreintegratedLayout {
 PreintegratedLayout preintegrated_layout(const SpectralTables& tables, const WavelengthSamples& samples,
                                          const PreintegratedDomain& domain, const PreintegrationSettings& settings);
 
-// Throws facet::Error (one line, with the sizes) when the tables would exceed max_buffer_bytes.
+// Throws facet::Error (one line, with the sizes) when the tables would exceed max_bytes, before building them.
 PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, const WavelengthSamples& samples,
                                                const PreintegratedDomain& domain,
                                                const PreintegrationSettings& settings = {});

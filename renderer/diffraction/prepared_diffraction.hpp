@@ -3,6 +3,7 @@
 // material or the render overrides the counts (docs/diffraction.md, "Rendering").
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct DiffractionSettings {
   int wavelengths = 0;
   int taylor = 0;
   std::optional<DiffractionMethod> method;  // `--diffraction`; unset: the materials' "method"
+  // The most bytes of `preintegrated` words one render-pass binding holds: 0 for the device's limit;
+  // tests lower it to split small tables (gpu/preintegrated_slices.hpp).
+  std::uint64_t preintegrated_binding_bytes = 0;
 };
 
 struct PreparedDiffraction {

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "common/error.hpp"
+#include "common/format_mib.hpp"
 #include "eval_diffraction.spv.h"
 #include "gpu/diffraction_layout.hpp"
 #include "vk/buffer.hpp"
@@ -21,8 +22,10 @@ std::vector<diffraction::DiffractionResult> evaluate_diffraction(vk::Context& co
     records.push_back({glm::vec4(glm::vec3(q.wi), q.lambda_nm), glm::vec4(glm::vec3(q.wr), 0.0f)});
   const std::vector<glm::vec2> coefficients = tables.coefficients_f32();
   if (coefficients.size() * sizeof(glm::vec2) > context.limits().maxStorageBufferRange)
-    throw Error("diffraction tables of " + std::to_string(coefficients.size() * sizeof(glm::vec2) >> 20) +
-                " MiB exceed the device's storage buffer range; use fewer samples or a larger tolerance");
+    throw Error("diffraction tables of " + format_mib(coefficients.size() * sizeof(glm::vec2)) +
+                " exceed the device's storage-buffer range of " + format_mib(context.limits().maxStorageBufferRange) +
+                ", the limit of --device gpu (it reads them as one storage buffer; --device cpu has none): use fewer "
+                "samples or a larger tolerance");
 
   const std::array<DiffractionTableInfo, 1> info = {table_info(tables)};
   auto table = vk::Buffer::from(context, std::span<const glm::vec2>(coefficients));

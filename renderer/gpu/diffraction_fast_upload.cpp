@@ -1,5 +1,6 @@
 #include "gpu/diffraction_fast_upload.hpp"
 
+#include <algorithm>
 #include <string>
 #include <variant>
 
@@ -8,6 +9,7 @@
 #include "diffraction/preintegrated_tables.hpp"
 #include "gpu/diffraction_domain.hpp"
 #include "gpu/diffraction_upload.hpp"
+#include "gpu/preintegrated_slices.hpp"
 
 namespace facet::gpu {
 
@@ -30,13 +32,13 @@ DiffractionMethod scene_diffraction_method(const Scene& scene, const diffraction
 
 void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
                        std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
-                       DiffractionMethod method, std::uint64_t max_buffer_bytes) {
+                       DiffractionMethod method, std::uint64_t max_bytes) {
   const auto& source = std::get<DiffractionMaterial>(scene.materials[scene_material]);
   if (method == DiffractionMethod::Preintegrated) {
     const std::uint64_t used = data.preintegrated_words.size() * sizeof(std::uint32_t);
     diffraction::PreintegrationSettings settings;
     settings.tolerance = kPreintegrationTolerance;
-    settings.max_buffer_bytes = max_buffer_bytes > used ? max_buffer_bytes - used : 0;
+    settings.max_bytes = max_bytes > used ? max_bytes - used : 0;
     diffraction::PreintegratedTables t;
     try {
       t = diffraction::build_preintegrated_tables(prepared.tables, prepared.samples,
@@ -50,6 +52,7 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
     material.fast_offsets.x = static_cast<std::uint32_t>(data.preintegrated_words.size());
     material.fast_offsets.y = static_cast<std::uint32_t>(data.preintegrated_scales.size());
     material.fast_scalars.x = static_cast<float>(t.R0);
+    data.cell_words = std::max(data.cell_words, preintegrated_cell_words(t.nu, t.terms, t.words));
     data.preintegrated_words.insert(data.preintegrated_words.end(), t.packed.begin(), t.packed.end());
     data.preintegrated_scales.insert(data.preintegrated_scales.end(), t.scale.begin(), t.scale.end());
   }

@@ -29,14 +29,15 @@ struct FastPathData {
   std::vector<std::uint32_t> preintegrated_words;
   std::vector<float> preintegrated_scales;
   std::vector<glm::vec4> observer;  // XYZ per nm (xyz_density), w unused
+  std::uint64_t cell_words = 0;     // the most words one cell of any preintegrated table spans
 };
 
 // Fills material's preintegrated_* / order_* / fast_* fields for `method` (the others stay zero)
 // and appends its tables to `data`. The preintegrated tables are refused (facet::Error, one line
-// with the sizes) when `data` would exceed max_buffer_bytes; a grating that is not periodic gets
+// with the sizes) when `data` would exceed max_bytes of device memory; a grating that is not periodic gets
 // periodic = 0, and the pass then runs the spectral path for it under `orders`.
 void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
                        std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
-                       diffraction::DiffractionMethod method, std::uint64_t max_buffer_bytes);
+                       diffraction::DiffractionMethod method, std::uint64_t max_bytes);
 
 }  // namespace facet::gpu

@@ -6,9 +6,12 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "common/format_mib.hpp"
 #include "diffraction/spectral_tables.hpp"
 #include "gpu/diffraction_fast_upload.hpp"
 #include "gpu/diffraction_layout.hpp"
+#include "gpu/render_layout.hpp"
+#include "vk/memory_limits.hpp"
 
 namespace facet::gpu {
 
@@ -41,6 +44,11 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
   std::vector<glm::vec4> wavelengths;
   FastPathData fast;
   int most_wavelengths = 0, most_taylor = 0;
+  // The preintegrated tables may take the device's memory, or what the pass's word bindings hold if less.
+  const std::uint64_t binding_words = preintegrated_binding_words(context, settings.preintegrated_binding_bytes);
+  const std::uint64_t table_memory =
+      std::min<std::uint64_t>(vk::memory_limits(context.physical_device()).heap_bytes,
+                              sizeof(std::uint32_t) * binding_words * FACET_RENDER_PREINTEGRATED_SLICES);
   const diffraction::DiffractionMethod method = scene_diffraction_method(scene, settings);
   const auto all = diffraction::prepare_scene_diffraction(scene, settings);
   for (size_t i = 0; i < all.size(); ++i) {
@@ -59,8 +67,7 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
     GpuDiffractionMaterial entry{};  // the fast paths' fields stay zero unless their method fills them
     entry.table = table_info(prepared->tables);
     entry.offsets = glm::uvec4(coefficients.size(), wavelengths.size(), s.lambda_nm.size(), 0);
-    append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method,
-                      context.limits().maxStorageBufferRange);
+    append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method, table_memory);
     materials.push_back(entry);
     most_wavelengths = std::max(most_wavelengths, static_cast<int>(s.lambda_nm.size()));
     most_taylor = std::max(most_taylor, prepared->tables.N);
@@ -68,24 +75,31 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
     for (size_t i = 0; i < s.lambda_nm.size(); ++i)
       wavelengths.emplace_back(static_cast<float>(s.lambda_nm[i]), glm::vec3(s.xyz_weight[i]));
   }
+  // The coefficients are one RG32UI texel binding (render/diffraction_bindings.glsl).
   const uint64_t bytes = coefficients.size() * sizeof(glm::vec2);
-  if (bytes > context.limits().maxStorageBufferRange)
-    throw Error(
-        "the diffraction tables of this scene (" + std::to_string(bytes >> 20) +
-        " MiB) exceed the device's storage buffer range; use gratings with fewer samples or a larger tolerance");
+  const uint64_t coefficient_limit = sizeof(glm::vec2) * static_cast<uint64_t>(context.limits().maxTexelBufferElements);
+  if (bytes > coefficient_limit)
+    throw Error("the spectral tables of this scene (" + format_mib(bytes) + ") exceed the device's texel buffer of " +
+                format_mib(coefficient_limit) + "; use gratings with fewer samples or a larger tolerance");
   // Placeholders where a method has no data (a buffer cannot be empty).
-  if (fast.preintegrated_words.empty()) fast.preintegrated_words.push_back(0);
   if (fast.preintegrated_scales.empty()) fast.preintegrated_scales.push_back(0.0f);
   if (fast.observer.empty()) fast.observer.emplace_back(0.0f);
-  return {vk::Buffer::from(context, std::span<const glm::vec2>(coefficients)),
-          vk::Buffer::from(context, std::span<const GpuDiffractionMaterial>(materials)),
-          vk::Buffer::from(context, std::span<const glm::vec4>(wavelengths)),
-          vk::Buffer::from(context, std::span<const uint32_t>(fast.preintegrated_words)),
-          vk::Buffer::from(context, std::span<const float>(fast.preintegrated_scales)),
-          vk::Buffer::from(context, std::span<const glm::vec4>(fast.observer)),
-          method,
-          most_wavelengths,
-          most_taylor};
+  DiffractionBuffers buffers{vk::Buffer::from(context, std::span<const glm::vec2>(coefficients)),
+                             vk::Buffer::from(context, std::span<const GpuDiffractionMaterial>(materials)),
+                             vk::Buffer::from(context, std::span<const glm::vec4>(wavelengths)),
+                             {},
+                             slice_preintegrated_words(fast.preintegrated_words.size(), fast.cell_words, binding_words),
+                             vk::Buffer::from(context, std::span<const float>(fast.preintegrated_scales)),
+                             vk::Buffer::from(context, std::span<const glm::vec4>(fast.observer)),
+                             method,
+                             most_wavelengths,
+                             most_taylor};
+  const std::span<const uint32_t> words(fast.preintegrated_words);
+  for (const auto& [begin, end] : buffers.preintegrated_slices.ranges)
+    buffers.preintegrated_words.push_back(vk::Buffer::from(context, words.subspan(begin, end - begin)));
+  while (buffers.preintegrated_words.size() < FACET_RENDER_PREINTEGRATED_SLICES)
+    buffers.preintegrated_words.push_back(vk::Buffer::from(context, std::span<const uint32_t>()));
+  return buffers;
 }
 
 }  // namespace facet::gpu

@@ -7,6 +7,7 @@
 
 #include "diffraction/order_wavelengths.hpp"
 #include "diffraction/prepared_diffraction.hpp"
+#include "gpu/preintegrated_slices.hpp"
 #include "scene/scene.hpp"
 #include "vk/buffer.hpp"
 #include "vk/context.hpp"
@@ -17,7 +18,10 @@ struct DiffractionBuffers {
   vk::Buffer coefficients;          // vec2: the tables of all materials, one after another
   vk::Buffer materials;             // GpuDiffractionMaterial, in the order of the scene's diffraction materials
   vk::Buffer wavelengths;           // vec4 (lambda nm, XYZ weight)
-  vk::Buffer preintegrated_words;   // uint: `preintegrated` tables (gpu/diffraction_fast_upload.hpp)
+  // uint: `preintegrated` tables (gpu/diffraction_fast_upload.hpp), one buffer per word binding
+  // (FACET_RENDER_PREINTEGRATED_SLICES; a one-word placeholder where a slice is unused)
+  std::vector<vk::Buffer> preintegrated_words;
+  PreintegratedSlices preintegrated_slices;  // how the words are split over them
   vk::Buffer preintegrated_scales;  // float: their per-term scales
   vk::Buffer observer;              // vec4: the `orders` observer tables, XYZ per nm
   diffraction::DiffractionMethod method = diffraction::DiffractionMethod::Spectral;  // kDiffractionMethod
@@ -41,7 +45,7 @@ long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diff
 
 // Diffraction material i of the scene (counting only diffraction materials, in scene order) is
 // entry i of `materials`: the index scene_upload puts in GpuMaterial::kind.y. Throws facet::Error
-// if the tables exceed the device's storage-buffer range, or if one ray of a material would exceed
+// if the tables exceed what the device's texel bindings or memory hold, or if one ray of a material would exceed
 // the loop limit above (spectral and orders; ss:K runs one ray per invocation and dispatch), or if the materials ask
 // for different methods (gpu/diffraction_fast_upload.hpp). A scene without diffraction gets one-element placeholders
 // (the pass binds them, its shader never reads them).

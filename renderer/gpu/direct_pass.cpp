@@ -64,16 +64,18 @@ void check_height_field_tracing(const Scene& scene, const RenderMethod& method) 
 // The specialization constants of the pass by their names in the shaders: what the scene uses, how
 // the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
-                                             diffraction::DiffractionMethod diffraction) {
+                                             const DiffractionBuffers& diffraction) {
   const auto constants = std::to_array<vk::SpecConstant>({
       {FACET_RENDER_SPEC_HAS_MICROFLAKE, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
       {FACET_RENDER_SPEC_HAS_TEXTURE, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
       {FACET_RENDER_SPEC_TEXTURE_METHOD, static_cast<uint32_t>(method.texture)},
       {FACET_RENDER_SPEC_HAS_DIFFRACTION, uses<DiffractionMaterial>(scene) ? 1u : 0u},
-      {FACET_RENDER_SPEC_DIFFRACTION_METHOD, static_cast<uint32_t>(diffraction)},
+      {FACET_RENDER_SPEC_DIFFRACTION_METHOD, static_cast<uint32_t>(diffraction.method)},
       {FACET_RENDER_SPEC_HAS_MICROSURFACE, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u},
       {FACET_RENDER_SPEC_HAS_SPHERES, scene.spheres.empty() ? 0u : 1u},
       {FACET_RENDER_SPEC_HAS_TRIANGLES, scene.meshes.empty() ? 0u : 1u},
+      {FACET_RENDER_SPEC_PREINTEGRATED_SLICES, diffraction.preintegrated_slices.count},
+      {FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS, diffraction.preintegrated_slices.slice_words},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};
@@ -109,7 +111,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                                     .spirv = direct_pass_program(scene, method),
                                     .buffer_count = FACET_RENDER_BINDING_COUNT,
                                     .push_constant_bytes = sizeof(GpuTile),
-                                    .specialization = specialization(scene, method, diffraction_.method),
+                                    .specialization = specialization(scene, method, diffraction_),
                                     .buffer_kinds = binding_kinds()});
       })) {
   check_height_field_tracing(scene, method);
@@ -138,7 +140,10 @@ std::vector<const vk::Buffer*> DirectPass::bindings() const {
   slots[FACET_RENDER_BINDING_DIFFRACTION_COEFFICIENTS] = &diffraction_.coefficients;
   slots[FACET_RENDER_BINDING_DIFFRACTION_MATERIALS] = &diffraction_.materials;
   slots[FACET_RENDER_BINDING_DIFFRACTION_WAVELENGTHS] = &diffraction_.wavelengths;
-  slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS] = &diffraction_.preintegrated_words;
+  slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS] = &diffraction_.preintegrated_words[0];
+  slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_1] = &diffraction_.preintegrated_words[1];
+  slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_2] = &diffraction_.preintegrated_words[2];
+  slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_3] = &diffraction_.preintegrated_words[3];
   slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_SCALES] = &diffraction_.preintegrated_scales;
   slots[FACET_RENDER_BINDING_DIFFRACTION_OBSERVER] = &diffraction_.observer;
   return slots;

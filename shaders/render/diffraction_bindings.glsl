@@ -19,6 +19,9 @@ FACET_DIFFRACTION_TEXELS(WAVELENGTHS, diffraction_wavelength_texels);
 FACET_DIFFRACTION_TEXELS(PREINTEGRATED_WORDS, diffraction_word_texels);
 FACET_DIFFRACTION_TEXELS(PREINTEGRATED_SCALES, diffraction_scale_texels);
 FACET_DIFFRACTION_TEXELS(OBSERVER, diffraction_observer_texels);
+FACET_DIFFRACTION_TEXELS(PREINTEGRATED_WORDS_1, diffraction_word_texels_1);
+FACET_DIFFRACTION_TEXELS(PREINTEGRATED_WORDS_2, diffraction_word_texels_2);
+FACET_DIFFRACTION_TEXELS(PREINTEGRATED_WORDS_3, diffraction_word_texels_3);
 #undef FACET_DIFFRACTION_TEXELS
 
 GpuDiffractionMaterial diffraction_material_at(uint i) {
@@ -36,7 +39,20 @@ GpuDiffractionMaterial diffraction_material_at(uint i) {
 vec4 diffraction_wavelength_at(uint i) { return FACET_F(diffraction_wavelength_texels, i); }  // lambda, XYZ
 vec2 diffraction_coefficient_at(uint i) { return FACET_F(diffraction_coefficient_texels, i).xy; }
 vec4 diffraction_observer_at(uint i) { return FACET_F(diffraction_observer_texels, i); }  // XYZ per nm
-uint diffraction_preintegrated_word(uint i) { return FACET_U(diffraction_word_texels, i).x; }
+
+// Word i of the preintegrated tables, from the slice holding every word of the cell whose first word
+// is cell_word: slice j binds words [j S, j S + S + overlap) and holds the cells starting in
+// [j S, (j + 1) S), S = kPreintegratedSliceWords (renderer/gpu/preintegrated_slices.hpp). One
+// slice (every table that fits one binding) compiles to a single fetch.
+uint diffraction_preintegrated_word(uint cell_word, uint i) {
+  if (kPreintegratedSlices == 1u) return FACET_U(diffraction_word_texels, i).x;
+  uint slice = cell_word / kPreintegratedSliceWords;
+  uint k = i - slice * kPreintegratedSliceWords;
+  if (slice == 0u) return FACET_U(diffraction_word_texels, k).x;
+  if (slice == 1u) return FACET_U(diffraction_word_texels_1, k).x;
+  if (slice == 2u) return FACET_U(diffraction_word_texels_2, k).x;
+  return FACET_U(diffraction_word_texels_3, k).x;
+}
 float diffraction_preintegrated_scale(uint i) { return FACET_F(diffraction_scale_texels, i).x; }
 
 #endif

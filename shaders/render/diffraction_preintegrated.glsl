@@ -1,6 +1,7 @@
 // The pre-integrated diffraction colour from its tables (lib/diffraction_preintegrated.glsl; the C++
 // twin is evaluate_preintegrated in renderer/diffraction/preintegrated_tables.cpp). The includer
-// defines `uint diffraction_preintegrated_word(uint)` (the tables' packed words) and
+// defines `uint diffraction_preintegrated_word(uint cell_word, uint i)` (the tables' packed word i,
+// read where the cell whose first word is cell_word lies whole) and
 // `float diffraction_preintegrated_scale(uint)` (one scale per polynomial coefficient).
 #ifndef FACET_RENDER_DIFFRACTION_PREINTEGRATED_GLSL
 #define FACET_RENDER_DIFFRACTION_PREINTEGRATED_GLSL
@@ -19,13 +20,14 @@ struct PreintegratedSource {
 };
 
 vec3 diffraction_preintegrated_corner(PreintegratedSource s, PreintegratedCell c, int du, int dv, int p) {
+  uint cell = s.first_word + uint(preintegrated_word_index(s.grid, c, 0, 0, 0));
   uint k = s.first_word + uint(preintegrated_word_index(s.grid, c, du, dv, p));
   float scale = diffraction_preintegrated_scale(s.first_scale + uint(p));
-  return s.grid.words == 2
-             ? preintegrated_unpack_half(diffraction_preintegrated_word(k), diffraction_preintegrated_word(k + 1u),
-                                         scale)
-             : preintegrated_unpack_float(diffraction_preintegrated_word(k), diffraction_preintegrated_word(k + 1u),
-                                          diffraction_preintegrated_word(k + 2u), scale);
+  return s.grid.words == 2 ? preintegrated_unpack_half(diffraction_preintegrated_word(cell, k),
+                                                       diffraction_preintegrated_word(cell, k + 1u), scale)
+                           : preintegrated_unpack_float(diffraction_preintegrated_word(cell, k),
+                                                        diffraction_preintegrated_word(cell, k + 1u),
+                                                        diffraction_preintegrated_word(cell, k + 2u), scale);
 }
 
 // Linear sRGB for wi, wr (unit vectors toward the light and the viewer in the grating's frame, z >= 0).

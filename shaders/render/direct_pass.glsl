@@ -16,6 +16,8 @@
 //                      render_direct_fields.comp: render/heightfield_trace.glsl)
 //   kHasSpheres, kHasTriangles  the scene has spheres / meshes (render/trace.glsl): lavapipe runs
 //                      the body of a loop over no primitives once, masked, so absent kinds are compiled out
+//   kPreintegratedSlices, kPreintegratedSliceWords  how many word bindings the `preintegrated` tables
+//                      span and the words each slice starts cells in (render/diffraction_bindings.glsl)
 // Tracing, the scene's buffers and each material family's shading live in render/*.glsl.
 // Two programs include this file: render_direct.comp, and render_direct_fields.comp, which defines
 // FACET_HEIGHT_FIELDS and so traces microsurfaces' height fields. Lavapipe compiles every call of
@@ -35,6 +37,8 @@ layout(constant_id = FACET_RENDER_SPEC_DIFFRACTION_METHOD) const uint kDiffracti
 layout(constant_id = FACET_RENDER_SPEC_HAS_MICROSURFACE) const bool kHasMicrosurface = false;  // render/microsurface_shading.glsl
 layout(constant_id = FACET_RENDER_SPEC_HAS_SPHERES) const bool kHasSpheres = true;
 layout(constant_id = FACET_RENDER_SPEC_HAS_TRIANGLES) const bool kHasTriangles = true;
+layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICES) const uint kPreintegratedSlices = 1u;
+layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS) const uint kPreintegratedSliceWords = 0xffffffffu;
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS
