@@ -21,6 +21,7 @@
 
 #include "batch/job.hpp"
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -31,8 +32,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::run_command;
-
-const std::string kFacet = FACET_EXECUTABLE;
 
 // A noise plane under a `frames`-frame camera path: small enough to render in milliseconds.
 std::string plane_scene(int frames) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -13,9 +14,6 @@ namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
-
-const std::string kFacet = FACET_EXECUTABLE;
-const std::string kScene = (fs::path(FACET_SOURCE_DIR) / "scenes" / "default.json").string();  // 1280 x 720
 
 class CliConventions : public ::testing::Test {
  protected:
@@ -40,20 +38,20 @@ TEST_F(CliConventions, VersionPrintsTheBuildsVersion) {
 TEST_F(CliConventions, MistypedCommandsAndOptionsNameTheNearestValidOne) {
   expect_one_line_error(facet("rendr"), "unknown command 'rendr'; did you mean 'render'?");
   expect_one_line_error(facet("make nois -o " + out("n.exr")), "did you mean 'noise'?");
-  expect_one_line_error(facet("render " + kScene + " -o " + out("a.exr") + " --widht 16"),
+  expect_one_line_error(facet("render " + kDefaultScene + " -o " + out("a.exr") + " --widht 16"),
                         "unknown option '--widht'; did you mean '--width'?");
   expect_one_line_error(facet("compare a.exr b.exr --jsn"), "did you mean '--json'?");
   // Nothing near: CLI11's own message, still one line.
-  expect_one_line_error(facet("render " + kScene + " -o " + out("a.exr") + " --zzzzzzzz"), "zzzzzzzz");
+  expect_one_line_error(facet("render " + kDefaultScene + " -o " + out("a.exr") + " --zzzzzzzz"), "zzzzzzzz");
 }
 
 TEST_F(CliConventions, OneSideOfTheResolutionKeepsTheScenesAspect) {
-  auto r = facet("render " + kScene + " -o " + out("w.exr") + " --width 64 --no-preview");
+  auto r = facet("render " + kDefaultScene + " -o " + out("w.exr") + " --width 64 --no-preview");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   Image image = read_exr(out("w.exr"));
   EXPECT_EQ(image.width, 64);
   EXPECT_EQ(image.height, 36);
-  r = facet("reference " + kScene + " -o " + out("h.exr") + " --height 9 --grid 1 --no-preview");
+  r = facet("reference " + kDefaultScene + " -o " + out("h.exr") + " --height 9 --grid 1 --no-preview");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   image = read_exr(out("h.exr"));
   EXPECT_EQ(image.width, 16);
@@ -72,8 +70,8 @@ TEST_F(CliConventions, OutputFoldersAreCreated) {
 TEST_F(CliConventions, OutputNamesMustSayWhatTheFileHolds) {
   expect_one_line_error(facet("make noise --size 8 -o " + out("n.png")), "n.png would hold OpenEXR data");
   expect_one_line_error(facet("make heightfield --size 8 -o " + out("h.tif")), ".exr");
-  expect_one_line_error(facet("render " + kScene + " -o " + out("r.png")), "r.png would hold OpenEXR data");
-  expect_one_line_error(facet("reference " + kScene + " -o " + out("r.png")), "r.png");
+  expect_one_line_error(facet("render " + kDefaultScene + " -o " + out("r.png")), "r.png would hold OpenEXR data");
+  expect_one_line_error(facet("reference " + kDefaultScene + " -o " + out("r.png")), "r.png");
   expect_one_line_error(facet("compare a.exr b.exr --heatmap " + out("m.exr")), "m.exr would hold PNG data");
   EXPECT_TRUE(fs::is_empty(dir_.path())) << "nothing written";
 }

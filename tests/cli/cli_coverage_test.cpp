@@ -11,6 +11,7 @@
 
 #include "common/error.hpp"
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -20,11 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_command;
 
-const std::string kFacet = FACET_EXECUTABLE;
-
 // A unit ball 5 units in front of the camera, centred in a 32 x 32 frame with a 90° field of view:
 // its silhouette is the circle of radius 16 tan(asin(1/5)) = 3.266 pixels about the frame's centre.
-const std::string kScene = R"({
+const std::string kCoverageScene = R"({
   "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "fov_y": 90, "width": 32, "height": 32},
   "background": [0.2, 0.3, 0.4],
   "materials": {"grey": {"type": "lambert"}},
@@ -34,7 +33,7 @@ const double kSilhouetteRadius = 16.0 * std::tan(std::asin(0.2));
 
 class CliCoverage : public ::testing::Test {
  protected:
-  void SetUp() override { std::ofstream(dir_ / "ball.json") << kScene; }
+  void SetUp() override { std::ofstream(dir_ / "ball.json") << kCoverageScene; }
   ScalarImage render(const std::string& command, const std::string& options, const std::string& name) {
     const auto r = run_command(kFacet + " " + command + " " + (dir_ / "ball.json").string() + " --no-preview -o " +
                                (dir_ / name).string() + " " + options);

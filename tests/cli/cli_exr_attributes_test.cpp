@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -23,11 +24,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_command;
 
-const std::string kFacet = FACET_EXECUTABLE;
-
 // A camera 5 units up +z looking at the origin, 90° vertical field of view, a 2:1 image: its right
 // is world +x and its up world +y, and the image plane at distance 1 spans x in [-2, 2], y in [-1, 1].
-const std::string kScene = R"({
+const std::string kAttributesScene = R"({
   "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y": 90, "width": 32, "height": 16},
   "materials": {"grey": {"type": "lambert"}},
   "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "grey"}]
@@ -43,7 +42,7 @@ Imath::V3f transform(const Imath::M44f& m, const Imath::V3f& p) {
 class CliExrAttributes : public ::testing::Test {
  protected:
   fs::path render(const std::string& command, const std::string& options) {
-    std::ofstream(dir_ / "scene.json") << kScene;
+    std::ofstream(dir_ / "scene.json") << kAttributesScene;
     const fs::path out = dir_ / (command + ".exr");
     const auto r = run_command(kFacet + " " + command + " " + (dir_ / "scene.json").string() + " -o " + out.string() +
                                " --no-preview " + options);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -13,9 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::run_command;
-
-const std::string kFacet = FACET_EXECUTABLE;
-const fs::path kScenes = fs::path(FACET_SOURCE_DIR) / "scenes";
 
 class CliIdleOptions : public ::testing::Test {
  protected:

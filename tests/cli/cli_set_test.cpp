@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -18,12 +19,10 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_command;
 
-const std::string kFacet = FACET_EXECUTABLE;
-
 // Looking down -z at a ball of radius 0.1 at the origin, lit from the camera, on black. With a
 // 90° field of view the 16-pixel image plane spans [-5, 5] at the ball, so the rays through the
 // centres of the four middle pixels pass 0.3125 from the axis: they miss it until it grows.
-const std::string kScene = R"({
+const std::string kSetScene = R"({
   "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "fov_y": 90, "width": 16, "height": 16},
   "light": {"direction": [0, 0, 1], "irradiance": [1, 1, 1]},
   "materials": {"grey": {"type": "lambert", "albedo": [0.8, 0.8, 0.8]}},
@@ -33,7 +32,7 @@ const std::string kScene = R"({
 
 class CliSet : public ::testing::Test {
  protected:
-  void SetUp() override { std::ofstream(dir_ / "scene.json") << kScene; }
+  void SetUp() override { std::ofstream(dir_ / "scene.json") << kSetScene; }
   // `facet reference` with one ray per pixel centre (no Vulkan: fast), float pixels.
   test::CommandResult reference(const std::string& sets, const std::string& name = "out.exr") {
     return run_command(kFacet + " reference " + (dir_ / "scene.json").string() + " --grid 1 --no-preview " +

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -14,9 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::run_command;
-
-const std::string kFacet = FACET_EXECUTABLE;
-const fs::path kScenes = fs::path(FACET_SOURCE_DIR) / "scenes";
 
 class Cli : public ::testing::Test {
  protected:

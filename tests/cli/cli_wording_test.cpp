@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -16,9 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_command;
 
-const std::string kFacet = FACET_EXECUTABLE;
-const std::string kScene = (fs::path(FACET_SOURCE_DIR) / "scenes" / "default.json").string();
-
 class CliWording : public ::testing::Test {
  protected:
   test::TempDir dir_;
@@ -26,14 +24,14 @@ class CliWording : public ::testing::Test {
 
 TEST_F(CliWording, OneTileIsOneTile) {
   // 16x16 fits one 256-pixel tile.
-  const auto r = run_command(kFacet + " render " + kScene + " -o " + (dir_ / "f.exr").string() +
+  const auto r = run_command(kFacet + " render " + kDefaultScene + " -o " + (dir_ / "f.exr").string() +
                              " --width 16 --height 16 --no-preview");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find(" ms in 1 tile) on "), std::string::npos) << r.err;
 }
 
 TEST_F(CliWording, DeviceCountAgreesWithItsNoun) {
-  const auto r = run_command(kFacet + " render " + kScene + " -o " + (dir_ / "f.exr").string() + " --device 99");
+  const auto r = run_command(kFacet + " render " + kDefaultScene + " -o " + (dir_ / "f.exr").string() + " --device 99");
   EXPECT_NE(r.exit_code, 0);
   std::smatch count;
   ASSERT_TRUE(std::regex_search(r.err, count, std::regex("has ([0-9]+) Vulkan device(s?) \\(see 'facet info'\\)")))
@@ -50,7 +48,7 @@ TEST_F(CliWording, OneOctaveIsOneOctave) {
 TEST_F(CliWording, ReferenceFramesCarryNoDeviceTime) {
   const fs::path out = dir_ / "ref.exr";
   const auto r =
-      run_command(kFacet + " reference " + kScene + " -o " + out.string() + " --width 8 --height 8 --grid 1");
+      run_command(kFacet + " reference " + kDefaultScene + " -o " + out.string() + " --width 8 --height 8 --grid 1");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ExrMetadata metadata;
   read_exr(out, &metadata);

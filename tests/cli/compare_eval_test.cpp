@@ -8,6 +8,7 @@
 
 #include "image/exr_io.hpp"
 #include "image/png_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -16,8 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::run_command;
-
-const std::string kFacet = FACET_EXECUTABLE;
 
 std::vector<nlohmann::json> parse_lines(const std::string& text) {
   std::vector<nlohmann::json> lines;

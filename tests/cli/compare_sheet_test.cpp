@@ -10,6 +10,7 @@
 #include "image/compare_sheet.hpp"
 #include "image/exr_io.hpp"
 #include "image/png_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -18,8 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::run_command;
-
-const std::string kFacet = FACET_EXECUTABLE;
 
 // A frame with structure, brightened by `gain` and shifted by `shift` pixels: tests that differ from
 // the reference in different amounts.

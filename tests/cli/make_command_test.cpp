@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -15,7 +16,6 @@ namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kFacet = FACET_EXECUTABLE;
 
 class MakeCommand : public ::testing::Test {
  protected:

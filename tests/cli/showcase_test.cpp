@@ -10,6 +10,7 @@
 #include "image/exr_io.hpp"
 #include "image/image_comparison.hpp"
 #include "image/png_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -19,7 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_command;
 
-const std::string kFacet = FACET_EXECUTABLE;
 const std::string kShowcase = (fs::path(FACET_SOURCE_DIR) / "tools" / "showcase.sh").string();
 
 SheetImage read_sheet_image(const fs::path& path) {

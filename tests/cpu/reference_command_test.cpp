@@ -5,20 +5,19 @@
 #include <string>
 
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 
 namespace facet {
 namespace {
 
-const std::string kFacet = FACET_EXECUTABLE;
-const std::string kScenes = std::string(FACET_SOURCE_DIR) + "/scenes/";
-
 TEST(ReferenceCommand, WritesTheImageWithItsMetadata) {
   const auto dir = std::filesystem::path(FACET_BINARY_DIR) / "test_scratch" / "reference_command";
   std::filesystem::remove_all(dir);
   const auto out = dir / "ref.exr";
-  const auto r = test::run_command(kFacet + " reference " + kScenes + "microsurface_slope.json -o " + out.string() +
-                                   " --width 12 --height 8 --grid 3 --seed 5 --threads 1 --pixel-type float");
+  const auto r =
+      test::run_command(kFacet + " reference " + (kScenes / "microsurface_slope.json").string() + " -o " +
+                        out.string() + " --width 12 --height 8 --grid 3 --seed 5 --threads 1 --pixel-type float");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ExrMetadata metadata;
   const Image image = read_exr(out, &metadata);
@@ -33,11 +32,11 @@ TEST(ReferenceCommand, WritesTheImageWithItsMetadata) {
 
 TEST(ReferenceCommand, BadInputIsOneLineAndNoFile) {
   const auto out = std::filesystem::path(FACET_BINARY_DIR) / "test_scratch" / "reference_absent.exr";
-  const auto r = test::run_command(kFacet + " reference " + kScenes + "absent.json -o " + out.string());
+  const auto r = test::run_command(kFacet + " reference " + (kScenes / "absent.json").string() + " -o " + out.string());
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "facet: error: " + kScenes + "absent.json: cannot open for reading\n");
+  EXPECT_EQ(r.err, "facet: error: " + (kScenes / "absent.json").string() + ": cannot open for reading\n");
   EXPECT_FALSE(std::filesystem::exists(out));
-  EXPECT_NE(test::run_command(kFacet + " reference " + kScenes + "default.json -o x.exr --grid 0").exit_code, 0);
+  EXPECT_NE(test::run_command(kFacet + " reference " + kDefaultScene + " -o x.exr --grid 0").exit_code, 0);
 }
 
 }  // namespace

@@ -19,11 +19,10 @@
 #include "reference_test_scenes.hpp"
 #include "scene/camera_frame.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/facet_paths.hpp"
 
 namespace facet {
 namespace {
-
-const std::filesystem::path kScenes = std::filesystem::path(FACET_SOURCE_DIR) / "scenes";
 
 Image render(const Scene& scene, int w, int h, int grid, bool jitter = true, int threads = 0, std::uint64_t seed = 1) {
   cpu::ReferenceOptions o;

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 
 namespace facet {
@@ -15,7 +16,6 @@ namespace {
 
 using test::run_command;
 
-const std::string kFacet = FACET_EXECUTABLE;
 const std::string kGrating = R"('{"type":"sinusoid","period_nm":1300,"amplitude_nm":80,"size_um":26,"samples":320}')";
 
 std::vector<nlohmann::json> parse_lines(const std::string& text) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "image/exr_io.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -18,9 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::run_command;
-
-const std::string kFacet = FACET_EXECUTABLE;
-const std::string kScene = (fs::path(FACET_SOURCE_DIR) / "scenes" / "default.json").string();
 
 int error_lines(const std::string& err) {
   int count = 0;
@@ -55,7 +53,7 @@ class Faults : public ::testing::Test {
 TEST_F(Faults, OutputFolderThatCannotBeCreated) {
   // A regular file where the output folder should be: fails for root too, unlike permissions.
   std::ofstream(dir_ / "blocker") << "not a folder";
-  const auto r = run_command(kFacet + " render " + kScene + " -o " + (dir_ / "blocker" / "out.exr").string() +
+  const auto r = run_command(kFacet + " render " + kDefaultScene + " -o " + (dir_ / "blocker" / "out.exr").string() +
                              " --width 16 --height 9");
   fs::remove(dir_ / "blocker");
   expect_clean_failure(r, "blocker");
@@ -64,19 +62,21 @@ TEST_F(Faults, OutputFolderThatCannotBeCreated) {
 TEST_F(Faults, FullDiskViaFileSizeLimit) {
   // ulimit -f counts 512-byte blocks in dash: the EXR (tens of kB) cannot be written. facet ignores
   // SIGXFSZ, so the write fails with EFBIG instead of the process being killed.
-  const auto r = run_command("ulimit -f 4; " + kFacet + " render " + kScene + " -o " + out() +
+  const auto r = run_command("ulimit -f 4; " + kFacet + " render " + kDefaultScene + " -o " + out() +
                              " --width 128 --height 72 --pixel-type float");
   expect_clean_failure(r, "out.exr");
 }
 
 TEST_F(Faults, SigintDuringRender) {
-  const auto r = interrupted(kFacet + " render " + kScene + " -o " + out() + " --width 8192 --height 8192", "INT", 2);
+  const auto r =
+      interrupted(kFacet + " render " + kDefaultScene + " -o " + out() + " --width 8192 --height 8192", "INT", 2);
   EXPECT_EQ(r.exit_code, 130) << "still running after 2 s? " << r.err;
   expect_clean_failure(r, "interrupted by SIGINT");
 }
 
 TEST_F(Faults, SigtermDuringRender) {
-  const auto r = interrupted(kFacet + " render " + kScene + " -o " + out() + " --width 8192 --height 8192", "TERM", 2);
+  const auto r =
+      interrupted(kFacet + " render " + kDefaultScene + " -o " + out() + " --width 8192 --height 8192", "TERM", 2);
   EXPECT_EQ(r.exit_code, 143) << r.err;
   expect_clean_failure(r, "SIGTERM");
 }
@@ -84,8 +84,8 @@ TEST_F(Faults, SigtermDuringRender) {
 TEST_F(Faults, SigintAndSigtermDuringReference) {
   for (const std::string signal : {"INT", "TERM"}) {
     const auto r = interrupted(
-        kFacet + " reference " + kScene + " -o " + out() + " --width 1024 --height 576 --grid 32 --threads 2", signal,
-        2);
+        kFacet + " reference " + kDefaultScene + " -o " + out() + " --width 1024 --height 576 --grid 32 --threads 2",
+        signal, 2);
     EXPECT_EQ(r.exit_code, signal == "INT" ? 130 : 143) << r.err;  // the same statuses as `render`
     expect_clean_failure(r, "interrupt");
   }
@@ -94,18 +94,21 @@ TEST_F(Faults, SigintAndSigtermDuringReference) {
 TEST_F(Faults, NoVulkanDevice) {
   const std::string no_driver = "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json ";
   expect_clean_failure(
-      run_command(no_driver + kFacet + " render " + kScene + " -o " + out() + " --width 16 --height 9"), "Vulkan");
+      run_command(no_driver + kFacet + " render " + kDefaultScene + " -o " + out() + " --width 16 --height 9"),
+      "Vulkan");
   expect_clean_failure(
-      run_command(kFacet + " render " + kScene + " -o " + out() + " --width 16 --height 9 --device nosuch"), "nosuch");
+      run_command(kFacet + " render " + kDefaultScene + " -o " + out() + " --width 16 --height 9 --device nosuch"),
+      "nosuch");
 }
 
 TEST_F(Faults, AbsurdSizesAreRefusedBeforeAllocation) {
   // Each would need tens of GB to hundreds of TB; refused by the documented bounds (docs/limits.md).
   for (const std::string& args :
-       {" render " + kScene + " -o " + out() + " --width 100000 --height 100000",
-        " render " + kScene + " -o " + out() + " --width -5",
-        " reference " + kScene + " -o " + out() + " --grid 100000", " make heightfield -o " + out() + " --size 100000",
-        " make noise -o " + out() + " --width 3000000000", " make noise -o " + out() + " --size 65536"})
+       {" render " + kDefaultScene + " -o " + out() + " --width 100000 --height 100000",
+        " render " + kDefaultScene + " -o " + out() + " --width -5",
+        " reference " + kDefaultScene + " -o " + out() + " --grid 100000",
+        " make heightfield -o " + out() + " --size 100000", " make noise -o " + out() + " --width 3000000000",
+        " make noise -o " + out() + " --size 65536"})
     expect_clean_failure(run_command(kFacet + args), "");
 }
 
@@ -120,8 +123,8 @@ TEST_F(Faults, FramesBeyondTheStorageBufferRangeRenderWhole) {
   const fs::path large = dir_ / "large.exr", small = dir_ / "small.exr";
   for (const auto& [file, size] : {std::pair{large, " --width 2900 --height 2900"},
                                    std::pair{small, " --width 290 --height 290 --method ss:10"}}) {
-    const auto r =
-        run_command(kFacet + " render " + kScene + " -o " + file.string() + size + " --pixel-type float --no-preview");
+    const auto r = run_command(kFacet + " render " + kDefaultScene + " -o " + file.string() + size +
+                               " --pixel-type float --no-preview");
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   const Image big = read_exr(large), reference = read_exr(small);

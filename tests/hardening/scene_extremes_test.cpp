@@ -14,14 +14,13 @@
 
 #include "common/error.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/facet_paths.hpp"
 
 namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
-
-const fs::path kScenes = fs::path(FACET_SOURCE_DIR) / "scenes";
 
 // JSON text has no NaN or infinity (and the parser refuses 1e400), but parse_scene takes a parsed
 // document, so they are tried too: the validation must not rely on the parser.
