@@ -100,18 +100,15 @@ vec4 heightfield_extent(HeightField f, int level, ivec2 node, ivec2 tile) {
   return vec4(lo.x, hi.x, lo.y, hi.y);
 }
 
-// The level-l surface's height at corner (i, j) of the level's node grid, i <= width, j <= height
-// (the last corner is the first: the field repeats).
-float heightfield_corner(HeightField f, int level, int i, int j) {
-  uvec4 info = texture_level_at(level == 0 ? f.vertices : f.corners + uint(level)).info;
-  int w = int(info.y), h = int(info.z);
-  return texel_at(info.x + uint((j == h ? 0 : j) * w + (i == w ? 0 : i))).x;
-}
-
-// The corners (z00, z10, z01, z11) of the level-l surface over its node n.
+// The corners (z00, z10, z01, z11) of the level-l surface over its node n, from the level's corner
+// grid (the last corner is the first: the field repeats).
 vec4 heightfield_node_corners(HeightField f, int level, ivec2 n) {
-  return vec4(heightfield_corner(f, level, n.x, n.y), heightfield_corner(f, level, n.x + 1, n.y),
-              heightfield_corner(f, level, n.x, n.y + 1), heightfield_corner(f, level, n.x + 1, n.y + 1));
+  uvec4 info = texture_level_at(level == 0 ? f.vertices : f.corners + uint(level)).info;
+  ivec2 size = ivec2(info.yz), far = n + 1;
+  far = ivec2(far.x == size.x ? 0 : far.x, far.y == size.y ? 0 : far.y);
+  uint row0 = info.x + uint(n.y * size.x), row1 = info.x + uint(far.y * size.x);
+  return vec4(texel_at(row0 + uint(n.x)).x, texel_at(row0 + uint(far.x)).x, texel_at(row1 + uint(n.x)).x,
+              texel_at(row1 + uint(far.x)).x);
 }
 
 // The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e):
@@ -197,9 +194,9 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
         vec2 mid = min(e.xz + vec2(1 << (level - 1)), e.yw);
         ivec2 half_xy = ivec2(heightfield_half(r.o.x, r.d.x, r.inv_d.x, t, mid.x),
                               heightfield_half(r.o.y, r.d.y, r.inv_d.y, t, mid.y));
-        uvec4 children = heightfield_level(f, level - 1);
-        node = min(2 * node + half_xy, ivec2(children.yz) - 1);  // no upper half where the tile ends
         --level;
+        ivec2 children = (f.size + (1 << level) - 1) >> level;  // the level's nodes per tile
+        node = min(2 * node + half_xy, children - 1);           // no upper half where the tile ends
         continue;
       }
       if (!smoothed) corners = heightfield_leaf_corners(f, level, node, tile, e);
