@@ -144,11 +144,11 @@ int heightfield_half(float o, float d, float inv_d, float t, float mid) {
   return crossed == (d > 0.0) ? 1 : 0;
 }
 
-// Along one axis, the tile (of count, each `size` texels) holding the ray at t: the point's floor,
-// moved back one tile where rounding put it past the face the ray enters that tile through.
-int heightfield_start_tile(float o, float d, float inv_d, float t, float size, int count) {
-  int i = clamp(int(floor((o + t * d) / size)), 0, count - 1);
-  float face = float(d > 0.0 ? i : i + 1) * size;
+// Along one axis, which of `count` intervals base + [i w, min((i + 1) w, end)] holds the ray at t:
+// the point's floor, moved back one where rounding put it past the face the ray enters it through.
+int heightfield_start_index(float o, float d, float inv_d, float t, float base, float w, float end, int count) {
+  int i = clamp(int(floor((o + t * d - base) / w)), 0, count - 1);
+  float face = base + (d > 0.0 ? float(i) * w : min(float(i + 1) * w, end));
   if (d != 0.0 && t < (face - o) * inv_d) i = clamp(i - int(sign(d)), 0, count - 1);
   return i;
 }
@@ -166,10 +166,22 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
   if (!(t <= t_end)) return -1.0;
   bool smoothed = f.leaf > 0 || f.blend > 0.0;
   ivec2 dir = ivec2(sign(r.d.xy));
-  ivec2 tile = ivec2(heightfield_start_tile(r.o.x, r.d.x, r.inv_d.x, t, float(f.size.x), f.tiles.x),
-                     heightfield_start_tile(r.o.y, r.d.y, r.inv_d.y, t, float(f.size.y), f.tiles.y));
+  vec2 tile_size = vec2(f.size);
+  ivec2 tile = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, 0.0, tile_size.x, tile_size.x * float(f.tiles.x), f.tiles.x),
+                     heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, 0.0, tile_size.y, tile_size.y * float(f.tiles.y), f.tiles.y));
   int level = f.top;
   ivec2 node = ivec2(0);
+  if (t == 0.0) {
+    // The ray starts inside the field's box, as shadow rays leaving the surface do: start at the leaf
+    // under its origin (nothing of the ray lies before it). From a point on the surface, which every
+    // ancestor of that leaf holds, a descent from the tile's root would skip nothing.
+    level = f.leaf;
+    vec2 base = vec2(tile) * tile_size;
+    float w = float(1 << level);
+    ivec2 count = (f.size + (1 << level) - 1) >> level;
+    node = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, base.x, w, tile_size.x, count.x),
+                 heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, base.y, w, tile_size.y, count.y));
+  }
   for (int step = 0; step < FACET_HEIGHTFIELD_MAX_STEPS; ++step) {
     vec4 e = heightfield_extent(f, level, node, tile);
     float exit_x = heightfield_plane_t(r.o.x, r.d.x, r.inv_d.x, r.d.x > 0.0 ? e.y : e.x);
