@@ -131,6 +131,9 @@ uvec4 heightfield_level(HeightField f, int l) {
   return texture_level_at((f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(min(l, f.top))).info;
 }
 
+// The nodes of MIP level l along each axis of a tile.
+ivec2 heightfield_nodes_per_tile(HeightField f, int level) { return (f.size + (1 << level) - 1) >> level; }
+
 // The t where the ray crosses the plane at p of one axis (d = 0: never).
 float heightfield_plane_t(float o, float d, float inv_d, float p) {
   return d == 0.0 ? kHeightFieldFar : (p - o) * inv_d;
@@ -178,7 +181,7 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     level = f.leaf;
     vec2 base = vec2(tile) * tile_size;
     float w = float(1 << level);
-    ivec2 count = (f.size + (1 << level) - 1) >> level;
+    ivec2 count = heightfield_nodes_per_tile(f, level);
     node = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, base.x, w, tile_size.x, count.x),
                  heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, base.y, w, tile_size.y, count.y));
   }
@@ -207,8 +210,7 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
         ivec2 half_xy = ivec2(heightfield_half(r.o.x, r.d.x, r.inv_d.x, t, mid.x),
                               heightfield_half(r.o.y, r.d.y, r.inv_d.y, t, mid.y));
         --level;
-        ivec2 children = (f.size + (1 << level) - 1) >> level;  // the level's nodes per tile
-        node = min(2 * node + half_xy, children - 1);           // no upper half where the tile ends
+        node = min(2 * node + half_xy, heightfield_nodes_per_tile(f, level) - 1);  // no upper half where the tile ends
         continue;
       }
       if (!smoothed) corners = heightfield_leaf_corners(f, level, node, tile, e);
