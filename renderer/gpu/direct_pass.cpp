@@ -39,7 +39,7 @@ std::span<const uint32_t> direct_pass_program(const Scene& scene, const RenderMe
                                              : std::span<const uint32_t>(render_direct_spv);
 }
 
-// Refuses, in one line, height fields whose traversal could pass the shader's loop bound or stack
+// Refuses, in one line, height fields whose traversal could pass the shader's loop bound
 // (render/heightfield_trace.glsl; lavapipe would cut the loop short without a word).
 void check_height_field_tracing(const Scene& scene, const RenderMethod& method) {
   if (!traces_height_fields(scene, method)) return;
@@ -47,16 +47,11 @@ void check_height_field_tracing(const Scene& scene, const RenderMethod& method) 
   for (const Plane& plane : scene.planes) {
     const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
     if (!m || !plane.size) continue;
-    const HeightFieldTraceCost cost = heightfield_trace_cost(*m, *plane.size);
-    if (cost.levels > 21)
-      throw Error("microsurface '" + scene.material_names[plane.material] +
-                  "': its rectangle spans too many tiles of " + "its field for the GPU tracer's quadtree (" +
-                  std::to_string(cost.levels) + " levels > 21)");
-    nodes += cost.nodes;
+    nodes += heightfield_trace_cost(*m, *plane.size).nodes;
   }
   if (nodes > FACET_HEIGHTFIELD_MAX_STEPS)
     throw Error("the microsurfaces' height fields span too many texels for the GPU tracer: a ray may visit " +
-                std::to_string(nodes) + " quadtree nodes, more than its loop bound of " +
+                std::to_string(nodes) + " MIP nodes, more than its loop bound of " +
                 std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) +
                 " (use coarser texels, a smaller rectangle or --method mip)");
 }

@@ -1,7 +1,6 @@
 #include "gpu/microsurface_upload.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -131,18 +130,15 @@ HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material
       static_cast<std::int64_t>(std::ceil(patch_size.x / (static_cast<double>(w) * material.texel_size)));
   const std::int64_t tiles_y =
       static_cast<std::int64_t>(std::ceil(patch_size.y / (static_cast<double>(h) * material.texel_size)));
+  // The traversal (render/heightfield_trace.glsl) takes one step per node it enters, enters each node
+  // at most once and enters a level's nodes in order along the ray, each a column or a row (or both)
+  // past the last: a segment over a C x R grid of nodes enters at most C + R - 1 of them, per level.
   HeightFieldTraceCost cost;
-  const auto ceil_log2 = [](std::int64_t n) {
-    return static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n - 1)));
-  };  // n >= 1
-  cost.levels = ceil_log2(std::max(w, h)) + ceil_log2(std::max(tiles_x, tiles_y));
-  // A line crosses at most C - 1 column and R - 1 row boundaries of a C x R grid of nodes, and each
-  // crossing adds at most 1.5 nodes whose closed boxes it touches (3 at a corner): < 2 (C + R) per level.
-  const auto add = [&](std::int64_t columns, std::int64_t rows) { cost.nodes += 2 * (columns + rows); };
-  for (int l = 0; (std::int64_t{1} << l) < 2 * std::max(w, h); ++l)
-    add(tiles_x * ((w + (std::int64_t{1} << l) - 1) >> l), tiles_y * ((h + (std::int64_t{1} << l) - 1) >> l));
-  for (int g = 1; (std::int64_t{1} << g) < 2 * std::max(tiles_x, tiles_y); ++g)
-    add((tiles_x + (std::int64_t{1} << g) - 1) >> g, (tiles_y + (std::int64_t{1} << g) - 1) >> g);
+  for (int l = 0; (std::int64_t{1} << l) < 2 * std::max(w, h); ++l) {
+    const std::int64_t columns = tiles_x * ((w + (std::int64_t{1} << l) - 1) >> l);
+    const std::int64_t rows = tiles_y * ((h + (std::int64_t{1} << l) - 1) >> l);
+    cost.nodes += columns + rows - 1;
+  }
   return cost;
 }
 

@@ -35,11 +35,10 @@ MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, dou
 GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& material);
 
 // What tracing the material's field over a rectangle of patch_size costs the GPU tracer: an upper
-// bound on the quadtree nodes one ray visits (at most FACET_HEIGHTFIELD_MAX_STEPS loop steps in all
-// fields of a scene) and the quadtree's depth (its stack holds 3 nodes per level, at most 21 levels).
+// bound on the MIP nodes one ray visits (at most FACET_HEIGHTFIELD_MAX_STEPS loop steps in all fields
+// of a scene).
 struct HeightFieldTraceCost {
   std::int64_t nodes = 0;
-  int levels = 0;
 };
 HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material, glm::dvec2 patch_size);
 

@@ -73,13 +73,27 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   if (dot(n, d) > 0.0) n = -n;
   vec3 l = globals.light_direction.xyz;
   GpuMaterial m = material_at(hit.material);
+  bool field_hit = false;
 #ifdef FACET_HEIGHT_FIELDS
-  if (kHasMicrosurface && hit.primitive == kHeightField)
-    return microsurface_field_radiance(m, hit, o, d, p, n, camera_ray(film + vec2(pixel_step, 0.0)),
-                                       camera_ray(film + vec2(0.0, pixel_step)), l);
+  MicrosurfaceFieldSample field;
+  field_hit = kHasMicrosurface && hit.primitive == kHeightField;
+  if (field_hit)
+    field = microsurface_field_sample(m, hit, o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
+                                      camera_ray(film + vec2(0.0, pixel_step)));
 #endif
-  // Offset the shadow ray's origin by a distance relative to the scene's scale at p.
-  float visibility = dot(n, l) > 0.0 && occluded(p + n * (1e-4 * max(1.0, length(p))), l, hit, n, kTracesHeightFields) ? 0.0 : 1.0;
+  // One call casts every kind of hit's shadow ray (each call of the height-field traversal is compiled
+  // on its own). Its origin is offset by a distance relative to the scene's scale at p; less from a
+  // traced field's hits, which are exact to a few float ulps where the field's detail is finer than
+  // the macro-surfaces' offset.
+  bool lit = dot(n, l) > 0.0;
+#ifdef FACET_HEIGHT_FIELDS
+  lit = lit && (!field_hit || field.w > 0.0);  // a filtered hit shaded by statistics alone needs no ray
+#endif
+  float offset = field_hit ? 1e-5 : 1e-4;
+  float visibility = lit && occluded(p + n * (offset * max(1.0, length(p))), l, hit, n, kTracesHeightFields) ? 0.0 : 1.0;
+#ifdef FACET_HEIGHT_FIELDS
+  if (field_hit) return microsurface_field_radiance(m, hit, field, d, p, n, l, visibility);
+#endif
   if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE) {  // finite planes only (scene loader)
     GpuPlane plane = plane_at(hit.index);
     return microsurface_radiance(m, plane,

@@ -1,19 +1,19 @@
 // Rays against a microsurface's height field, as `facet reference` traces it (cpu/heightfield.cpp):
 // bilinear cells (lib/heightfield_cell.glsl) tiled over the plane's rectangle, found front to back
-// through a quadtree of tiles over each tile's min-max MIP (renderer/gpu/microsurface_upload.hpp).
+// tile by tile through each tile's min-max MIP (renderer/gpu/microsurface_upload.hpp), without a
+// stack: the ray walks from node to node in order along its path (docs/microsurface_filtering.md).
 // Silhouettes come for free: outside the rectangle there is no surface, and a ray that passes over
 // the field's bumps at a grazing angle misses them.
 // A ray may instead trace the field smoothed to level lambda = leaf + blend (docs/microsurface_filtering.md
 // (T2)): bilinear over the level-`leaf` nodes between their corner heights, blended with the next
 // level's surface; the traversal then stops at that level.
-// Loop bound: one step per quadtree node visited, at most FACET_HEIGHTFIELD_MAX_STEPS per ray; the
-// pass refuses a patch whose bound on visited nodes passes it (heightfield_trace_cost).
+// Loop bound: one step per MIP node visited, at most FACET_HEIGHTFIELD_MAX_STEPS per ray; the pass
+// refuses a patch whose bound on visited nodes passes it (heightfield_trace_cost).
 #ifndef FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
 #define FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
 #include "lib/heightfield_cell.glsl"
 #include "render/scene_bindings.glsl"
 
-const int kHeightFieldStack = 64;  // 3 entries per level below the root: levels <= 21 (upload check)
 const float kHeightFieldFar = 1e30;
 
 // The field of a microsurface plane in its own coordinates: x, y in texels from the rectangle's
@@ -33,7 +33,6 @@ struct HeightField {
   int top;
   ivec2 size;     // cells (= vertices) of one tile
   ivec2 tiles;    // tiles over the rectangle (the last may be cut)
-  int tile_levels;  // tile quadtree depth above the per-tile roots
   vec2 range;     // z over the whole field
 };
 
@@ -66,9 +65,6 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   uvec4 info = texture_level_at(f.vertices).info;
   f.size = ivec2(info.yz);
   f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
-  int most = max(f.tiles.x, f.tiles.y), levels = 0;
-  while ((1 << levels) < most) ++levels;
-  f.tile_levels = levels;
   f.range = texel_at(texture_level_at(f.bounds + uint(f.top)).info.x).xy;
   return f;
 }
@@ -97,40 +93,32 @@ HeightFieldRay heightfield_ray(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, fl
   return r;
 }
 
-// A node: (level, i, j, tile). Levels above `top` are groups of 2^(level - top) tiles squared at
-// (i, j); levels up to `top` are node (i, j) of the min-max MIP of tile `tile` (= ty tiles.x + tx).
-// Its extent in texels: (x_lo, x_hi, y_lo, y_hi).
-vec4 heightfield_extent(HeightField f, ivec4 n) {
-  if (n.x > f.top) {
-    int g = n.x - f.top;
-    return vec4(float(n.y << g) * float(f.size.x), float(min((n.y + 1) << g, f.tiles.x)) * float(f.size.x),
-                float(n.z << g) * float(f.size.y), float(min((n.z + 1) << g, f.tiles.y)) * float(f.size.y));
-  }
-  vec2 base = vec2(n.w % f.tiles.x, n.w / f.tiles.x) * vec2(f.size);
-  return vec4(base.x + float(n.y << n.x), base.x + float(min((n.y + 1) << n.x, f.size.x)),
-              base.y + float(n.z << n.x), base.y + float(min((n.z + 1) << n.x, f.size.y)));
+// Node `node` of MIP level `level` of tile `tile`: its extent in texels (x_lo, x_hi, y_lo, y_hi).
+vec4 heightfield_extent(HeightField f, int level, ivec2 node, ivec2 tile) {
+  vec2 base = vec2(tile * f.size);
+  vec2 lo = base + vec2(node << level), hi = base + vec2(min((node + 1) << level, f.size));
+  return vec4(lo.x, hi.x, lo.y, hi.y);
 }
 
-// The level-l surface's height at corner (i, j) of the level's node grid, i <= width, j <= height
-// (the last corner is the first: the field repeats).
-float heightfield_corner(HeightField f, int level, int i, int j) {
+// The corners (z00, z10, z01, z11) of the level-l surface over its node n, from the level's corner
+// grid (the last corner is the first: the field repeats).
+vec4 heightfield_node_corners(HeightField f, int level, ivec2 n) {
   uvec4 info = texture_level_at(level == 0 ? f.vertices : f.corners + uint(level)).info;
-  int w = int(info.y), h = int(info.z);
-  return texel_at(info.x + uint((j == h ? 0 : j) * w + (i == w ? 0 : i))).x;
+  ivec2 size = ivec2(info.yz), far = n + 1;
+  far = ivec2(far.x == size.x ? 0 : far.x, far.y == size.y ? 0 : far.y);
+  uint row0 = info.x + uint(n.y * size.x), row1 = info.x + uint(far.y * size.x);
+  return vec4(texel_at(row0 + uint(n.x)).x, texel_at(row0 + uint(far.x)).x, texel_at(row1 + uint(n.x)).x,
+              texel_at(row1 + uint(far.x)).x);
 }
 
 // The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e):
 // the leaf level's corners blended with the next level's surface at the same points (a bilinear
 // patch of the parent node, so the blend is bilinear over n and continuous across nodes).
-vec4 heightfield_leaf_corners(HeightField f, ivec4 n, vec4 e) {
-  vec4 z = vec4(heightfield_corner(f, n.x, n.y, n.z), heightfield_corner(f, n.x, n.y + 1, n.z),
-                heightfield_corner(f, n.x, n.y, n.z + 1), heightfield_corner(f, n.x, n.y + 1, n.z + 1));
+vec4 heightfield_leaf_corners(HeightField f, int level, ivec2 n, ivec2 tile, vec4 e) {
+  vec4 z = heightfield_node_corners(f, level, n);
   if (f.blend <= 0.0) return z;
-  ivec4 parent = ivec4(n.x + 1, n.y >> 1, n.z >> 1, n.w);
-  vec4 pe = heightfield_extent(f, parent);
-  vec4 pz = vec4(heightfield_corner(f, parent.x, parent.y, parent.z), heightfield_corner(f, parent.x, parent.y + 1, parent.z),
-                 heightfield_corner(f, parent.x, parent.y, parent.z + 1),
-                 heightfield_corner(f, parent.x, parent.y + 1, parent.z + 1));
+  vec4 pe = heightfield_extent(f, level + 1, n >> 1, tile);
+  vec4 pz = heightfield_node_corners(f, level + 1, n >> 1);
   vec2 u = (e.xy - pe.x) / (pe.y - pe.x), v = (e.zw - pe.z) / (pe.w - pe.z);
   vec4 coarse = vec4(heightfield_bilinear(pz, u.x, v.x), heightfield_bilinear(pz, u.y, v.x),
                      heightfield_bilinear(pz, u.x, v.y), heightfield_bilinear(pz, u.y, v.y));
@@ -143,128 +131,116 @@ uvec4 heightfield_level(HeightField f, int l) {
   return texture_level_at((f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(min(l, f.top))).info;
 }
 
-// The planes splitting node n (level > 0) into its children, per axis (lo, mid, hi) in texels; mid is
-// clipped to hi where the tile (or the tile grid) ends inside the node's lower half.
-void heightfield_split(HeightField f, ivec4 n, out vec3 x, out vec3 y) {
-  vec4 e = heightfield_extent(f, n);
-  vec2 half_size = n.x > f.top ? vec2(float(1 << (n.x - f.top - 1))) * vec2(f.size) : vec2(float(1 << (n.x - 1)));
-  x = vec3(e.x, min(e.x + half_size.x, e.y), e.y);
-  y = vec3(e.z, min(e.z + half_size.y, e.w), e.w);
+// The nodes of MIP level l along each axis of a tile.
+ivec2 heightfield_nodes_per_tile(HeightField f, int level) { return (f.size + (1 << level) - 1) >> level; }
+
+// The t where the ray crosses the plane at p of one axis (d = 0: never).
+float heightfield_plane_t(float o, float d, float inv_d, float p) {
+  return d == 0.0 ? kHeightFieldFar : (p - o) * inv_d;
 }
 
-// The t-intervals over the lower (xy) and upper (zw) half along one axis, from the planes
-// (lo, mid, hi): three products shared by the four children (d = 0: all t or none).
-vec4 heightfield_halves(float o, float d, float inv_d, vec3 planes) {
-  if (d == 0.0) {
-    vec2 all_t = vec2(-kHeightFieldFar, kHeightFieldFar), none = vec2(kHeightFieldFar, -kHeightFieldFar);
-    return vec4(o >= planes.x && o <= planes.y ? all_t : none, o >= planes.y && o <= planes.z ? all_t : none);
-  }
-  vec3 t = (planes - o) * inv_d;
-  return d > 0.0 ? t.xyyz : t.yxzy;
+// Along one axis, which half (0: lower, 1: upper) of a node split at `mid` holds the ray at t: the
+// half it enters first until it has crossed the plane, the other from then on.
+int heightfield_half(float o, float d, float inv_d, float t, float mid) {
+  if (d == 0.0) return o >= mid ? 1 : 0;
+  bool crossed = t >= (mid - o) * inv_d;
+  return crossed == (d > 0.0) ? 1 : 0;
 }
 
-// The child (a, b) of node n (level > 0), or level -1 if it lies outside the tile grid.
-ivec4 heightfield_child(HeightField f, ivec4 n, int a, int b) {
-  ivec4 c = ivec4(n.x - 1, 2 * n.y + a, 2 * n.z + b, n.w);
-  if (n.x <= f.top) return c;
-  int g = c.x - f.top;  // tiles per child group, as a power of two
-  if ((c.y << g) >= f.tiles.x || (c.z << g) >= f.tiles.y) return ivec4(-1);
-  return g == 0 ? ivec4(f.top, 0, 0, c.z * f.tiles.x + c.y) : c;
+// Along one axis, which of `count` intervals base + [i w, min((i + 1) w, end)] holds the ray at t:
+// the point's floor, moved back one where rounding put it past the face the ray enters it through.
+int heightfield_start_index(float o, float d, float inv_d, float t, float base, float w, float end, int count) {
+  int i = clamp(int(floor((o + t * d - base) / w)), 0, count - 1);
+  float face = base + (d > 0.0 ? float(i) * w : min(float(i + 1) * w, end));
+  if (d != 0.0 && t < (face - o) * inv_d) i = clamp(i - int(sign(d)), 0, count - 1);
+  return i;
 }
 
-// Where the ray enters node c (level -1: none) whose x and y intervals are tx, ty, or kHeightFieldFar
-// if it misses it before `best`; `level`: the record of c's level in the bounds chain.
-float heightfield_child_enter(HeightField f, HeightFieldRay r, ivec4 c, vec2 tx, vec2 ty, uvec4 level, float best,
-                              float margin_z) {
-  if (c.x < 0) return kHeightFieldFar;
-  vec2 z = f.range;
-  if (c.x <= f.top) {  // a MIP node: padding entries outside the level are empty
-    if (c.y >= int(level.y) || c.z >= int(level.z)) return kHeightFieldFar;
-    z = texel_at(level.x + uint(c.z) * level.y + uint(c.y)).xy;
-    if (c.x == f.leaf && (f.leaf > 0 || f.blend > 0.0)) {
-      // A smoothed leaf lies between its corners (a bilinear patch), which the next level's corners
-      // reach beyond the dilated bounds.
-      vec4 cz = heightfield_leaf_corners(f, c, heightfield_extent(f, c));
-      z = vec2(min(min(cz.x, cz.y), min(cz.z, cz.w)), max(max(cz.x, cz.y), max(cz.z, cz.w)));
-    }
-  }
-  vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
-  float enter = max(max(tx.x, ty.x), max(tz.x, r.t_lo));
-  return z.x <= z.y && enter <= min(min(tx.y, ty.y), min(tz.y, best)) ? enter : kHeightFieldFar;
-}
-
-// The ray's first hit t with the field in (r.t_lo, r.t_hi) (any hit, if any_hit), or -1.
-float heightfield_search(HeightField f, HeightFieldRay r, bool any_hit) {
-  if (!(r.t_lo <= r.t_hi)) return -1.0;
+// The ray's first hit t with the field in (r.t_lo, r.t_hi), or -1. Stackless: the ray sits in one
+// node at parameter t. A node whose height bounds the ray misses between t and its exit is left for
+// its neighbour across the exit face, entered at its coarsest ancestor the ray has not been in (the
+// next tile's root across a tile face); one it meets is descended into at the child holding the ray
+// where it first reaches the bounds. Nodes come in order along the ray, so the first hit of a leaf is
+// the nearest (shadow rays need no other), and no node is entered twice.
+float heightfield_search(HeightField f, HeightFieldRay r) {
   float margin_z = 1e-5 * (abs(r.o.z) + abs(f.range.x) + abs(f.range.y));
-  float best = r.t_hi, found = -1.0;
-  ivec4 stack_node[kHeightFieldStack];
-  float stack_enter[kHeightFieldStack];
-  int size = 0;
-  ivec4 node = ivec4(f.top + f.tile_levels, 0, 0, 0);
-  vec4 root = heightfield_extent(f, node);
-  float enter = heightfield_child_enter(f, r, node, heightfield_slab(r.o.x, r.d.x, r.inv_d.x, root.x, root.y),
-                                        heightfield_slab(r.o.y, r.d.y, r.inv_d.y, root.z, root.w),
-                                        heightfield_level(f, node.x), best, margin_z);
-  bool current = enter < kHeightFieldFar;
-  // One node per step, nearest first: the nearest child is descended into directly and its siblings
-  // are pushed far to near, so nodes are visited in the order of a pop-the-nearest traversal.
+  vec2 tz_all = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, f.range.x - margin_z, f.range.y + margin_z);
+  float t = max(r.t_lo, tz_all.x), t_end = min(r.t_hi, tz_all.y);
+  if (!(t <= t_end)) return -1.0;
+  bool smoothed = f.leaf > 0 || f.blend > 0.0;
+  ivec2 dir = ivec2(sign(r.d.xy));
+  vec2 tile_size = vec2(f.size);
+  ivec2 tile = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, 0.0, tile_size.x, tile_size.x * float(f.tiles.x), f.tiles.x),
+                     heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, 0.0, tile_size.y, tile_size.y * float(f.tiles.y), f.tiles.y));
+  int level = f.top;
+  ivec2 node = ivec2(0);
+  if (t == 0.0) {
+    // The ray starts inside the field's box, as shadow rays leaving the surface do: start at the leaf
+    // under its origin (nothing of the ray lies before it). From a point on the surface, which every
+    // ancestor of that leaf holds, a descent from the tile's root would skip nothing.
+    level = f.leaf;
+    vec2 base = vec2(tile) * tile_size;
+    float w = float(1 << level);
+    ivec2 count = heightfield_nodes_per_tile(f, level);
+    node = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, base.x, w, tile_size.x, count.x),
+                 heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, base.y, w, tile_size.y, count.y));
+  }
   for (int step = 0; step < FACET_HEIGHTFIELD_MAX_STEPS; ++step) {
-    if (!current) {
-      if (size == 0) break;
-      --size;
-      node = stack_node[size];
-      enter = stack_enter[size];
+    vec4 e = heightfield_extent(f, level, node, tile);
+    float exit_x = heightfield_plane_t(r.o.x, r.d.x, r.inv_d.x, r.d.x > 0.0 ? e.y : e.x);
+    float exit_y = heightfield_plane_t(r.o.y, r.d.y, r.inv_d.y, r.d.y > 0.0 ? e.w : e.z);
+    float t_exit = min(min(exit_x, exit_y), t_end);
+    uvec4 record = heightfield_level(f, level);
+    bool leaf = level == f.leaf;
+    vec4 corners = vec4(0.0);
+    vec2 z;
+    if (leaf && smoothed) {  // a smoothed leaf lies between its corners, which may pass the dilated bounds
+      corners = heightfield_leaf_corners(f, level, node, tile, e);
+      z = vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
+               max(max(corners.x, corners.y), max(corners.z, corners.w)));
+    } else {
+      z = texel_at(record.x + uint(node.y) * record.y + uint(node.x)).xy;
     }
-    current = false;
-    if (enter > best) continue;
-    if (node.x == f.leaf) {
-      vec4 e = heightfield_extent(f, node);
-      vec4 z = heightfield_leaf_corners(f, node, e);
-      float t;
-      if (node.x == 0) {  // a cell: as the reference tests it, in texels
-        t = heightfield_cell_hit(r.o, r.d, r.inv_d, e.x, e.z, z, r.t_lo, best);
+    vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
+    float t_in = max(t, tz.x);
+    if (t_in <= min(t_exit, tz.y)) {
+      if (!leaf) {
+        t = t_in;
+        vec2 mid = min(e.xz + vec2(1 << (level - 1)), e.yw);
+        ivec2 half_xy = ivec2(heightfield_half(r.o.x, r.d.x, r.inv_d.x, t, mid.x),
+                              heightfield_half(r.o.y, r.d.y, r.inv_d.y, t, mid.y));
+        --level;
+        node = min(2 * node + half_xy, heightfield_nodes_per_tile(f, level) - 1);  // no upper half where the tile ends
+        continue;
+      }
+      if (!smoothed) corners = heightfield_leaf_corners(f, level, node, tile, e);
+      float hit;
+      if (level == 0) {  // a cell: as the reference tests it, in texels
+        hit = heightfield_cell_hit(r.o, r.d, r.inv_d, e.x, e.z, corners, r.t_lo, r.t_hi);
       } else {  // a node: in its own unit square
         vec2 s = e.yw - e.xz;
         vec3 o = vec3((r.o.xy - e.xz) / s, r.o.z), d = vec3(r.d.xy / s, r.d.z);
-        t = heightfield_cell_hit(o, d, 1.0 / d, 0.0, 0.0, z, r.t_lo, best);
+        hit = heightfield_cell_hit(o, d, 1.0 / d, 0.0, 0.0, corners, r.t_lo, r.t_hi);
       }
-      if (t > 0.0 && t <= best) {
-        best = found = t;
-        if (any_hit) return t;
-      }
-      continue;
+      if (hit > 0.0) return hit;
     }
-    // The four children, sorted far to near by where the ray enters them. Their x and y intervals
-    // are the halves of the node's; their height bounds share one level record. Written out four
-    // times, not looped: lavapipe counts every loop iteration against its limit.
-    vec3 px, py;
-    heightfield_split(f, node, px, py);
-    vec4 hx = heightfield_halves(r.o.x, r.d.x, r.inv_d.x, px), hy = heightfield_halves(r.o.y, r.d.y, r.inv_d.y, py);
-    ivec4 c[4] = ivec4[4](heightfield_child(f, node, 0, 0), heightfield_child(f, node, 1, 0),
-                          heightfield_child(f, node, 0, 1), heightfield_child(f, node, 1, 1));
-    uvec4 level = heightfield_level(f, node.x - 1);
-    float e[4] = float[4](heightfield_child_enter(f, r, c[0], hx.xy, hy.xy, level, best, margin_z),
-                          heightfield_child_enter(f, r, c[1], hx.zw, hy.xy, level, best, margin_z),
-                          heightfield_child_enter(f, r, c[2], hx.xy, hy.zw, level, best, margin_z),
-                          heightfield_child_enter(f, r, c[3], hx.zw, hy.zw, level, best, margin_z));
-#define FACET_HF_ORDER(a, b)                                 \
-  if (e[a] < e[b]) {                                         \
-    float te = e[a]; e[a] = e[b]; e[b] = te;                 \
-    ivec4 tc = c[a]; c[a] = c[b]; c[b] = tc;                 \
+    if (t_exit >= t_end) break;
+    t = t_exit;
+    ivec2 next = node + ivec2(exit_x == t_exit ? dir.x : 0, exit_y == t_exit ? dir.y : 0);
+    ivec2 out_of_tile = ivec2(greaterThanEqual(next, ivec2(record.yz))) - ivec2(lessThan(next, ivec2(0)));
+    if (out_of_tile != ivec2(0)) {
+      tile += out_of_tile;
+      if (any(lessThan(tile, ivec2(0))) || any(greaterThanEqual(tile, f.tiles))) break;
+      level = f.top;
+      node = ivec2(0);
+    } else {
+      int k = findMSB((node.x ^ next.x) | (node.y ^ next.y));  // the levels whose ancestors differ
+      if (k < 0) break;  // no face crossed: t stuck (a NaN from a direction too small to invert)
+      level += k;
+      node = next >> k;
+    }
   }
-    FACET_HF_ORDER(0, 1) FACET_HF_ORDER(2, 3) FACET_HF_ORDER(0, 2) FACET_HF_ORDER(1, 3) FACET_HF_ORDER(1, 2)
-#undef FACET_HF_ORDER
-    // e is now descending: e[3] is the nearest; skipped children carry kHeightFieldFar.
-    if (e[3] == kHeightFieldFar) continue;
-    if (e[0] < kHeightFieldFar) { stack_node[size] = c[0]; stack_enter[size++] = e[0]; }
-    if (e[1] < kHeightFieldFar) { stack_node[size] = c[1]; stack_enter[size++] = e[1]; }
-    if (e[2] < kHeightFieldFar) { stack_node[size] = c[2]; stack_enter[size++] = e[2]; }
-    node = c[3];
-    enter = e[3];
-    current = true;
-  }
-  return found;
+  return -1.0;
 }
 
 #endif

@@ -35,13 +35,13 @@ bool is_height_field(GpuPlane plane, bool fields) {
   return kHasMicrosurface && fields && material_at(plane.material.x).kind.x == FACET_MATERIAL_MICROSURFACE;
 }
 
-// The first hit (any hit) of o + t d, t in (0, t_max), with the height field of microsurface plane i
-// smoothed to level lambda (0: the field), or -1.
-float trace_height_field(uint i, vec3 o, vec3 d, float t_max, bool any_hit, float lambda, out vec2 q) {
+// The first hit of o + t d, t in (0, t_max), with the height field of microsurface plane i smoothed
+// to level lambda (0: the field), or -1.
+float trace_height_field(uint i, vec3 o, vec3 d, float t_max, float lambda, out vec2 q) {
   GpuPlane plane = plane_at(i);
   GpuMaterial m = material_at(plane.material.x);
   HeightFieldRay r = heightfield_ray(m, plane, o, d, t_max);
-  float t = heightfield_search(heightfield_of(m, plane, lambda), r, any_hit);
+  float t = heightfield_search(heightfield_of(m, plane, lambda), r);
   q = clamp(r.o.xy + t * r.d.xy, vec2(0.0), 2.0 * plane.uv_half_size.zw / m.albedo.w);
   return t;
 }
@@ -94,7 +94,7 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
       vec2 q;
       GpuMaterial m = material_at(plane.material.x);
       float lambda = smoothed ? microsurface_trace_level(m, plane, o, d, d_dx, d_dy) : 0.0;
-      float t = trace_height_field(i, o, d, hit.t, false, lambda, q);
+      float t = trace_height_field(i, o, d, hit.t, lambda, q);
       if (t > t_min) {
         vec3 s = heightfield_point(m.texture.x, q, m.albedo.w);
         vec3 normal = plane.normal.xyz - s.y * plane.tangent.xyz - s.z * cross(plane.normal.xyz, plane.tangent.xyz);
@@ -130,7 +130,7 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields) {
 #ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(plane, fields)) {  // a field shadows itself: never skipped
       vec2 q;
-      if (trace_height_field(i, o, l, kInfinity, true, 0.0, q) > 0.0) return true;
+      if (trace_height_field(i, o, l, kInfinity, 0.0, q) > 0.0) return true;
       continue;
     }
 #endif
