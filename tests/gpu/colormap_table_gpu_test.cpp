@@ -109,7 +109,18 @@ TEST(ColormapTableGpu, GpuLookupMatchesTheCpuTableAndTheExactFilter) {
       EXPECT_LE(table[i][k], 1.0f + 1e-5f);
     }
   probes.resize(regular);
+  // Float lookup against the double lookup: the cell coordinate u (I - 1) carries ~2 eps_f (I - 1)
+  // of rounding (in cells), times the largest node-to-node step (<= 1 here: colours in [0, 1] but
+  // the step is far smaller; bound it by the map's colour spread 1), plus ~4 eps_f of blending.
   const double eps_f = std::ldexp(1.0, -24);
+  std::vector<double> float_bounds;
+  for (const precompute::PrefilteredColormap& t : tables) {
+    double step = 0;
+    for (int j = 0; j < t.grid.sigma_count; ++j)
+      for (int k = 0; k + 1 < t.grid.mu_count; ++k)
+        step = std::max(step, max_channel(t.values[j * t.grid.mu_count + k + 1] - t.values[j * t.grid.mu_count + k]));
+    float_bounds.push_back(2 * eps_f * (t.grid.mu_count - 1) * step + 8 * eps_f);
+  }
   double worst_vs_cpu_table = 0, worst_vs_exact = 0, worst_exact_gpu = 0;
   for (size_t i = 0; i < probes.size(); ++i) {
     const size_t m = static_cast<size_t>(probes[i].z);
@@ -127,14 +138,7 @@ TEST(ColormapTableGpu, GpuLookupMatchesTheCpuTableAndTheExactFilter) {
       EXPECT_EQ(table[i], exact[i]) << i;
       continue;
     }
-    // Float lookup against the double lookup: the cell coordinate u (I - 1) carries ~2 eps_f (I - 1)
-    // of rounding (in cells), times the largest node-to-node step (<= 1 here: colours in [0, 1] but
-    // the step is far smaller; bound it by the map's colour spread 1), plus ~4 eps_f of blending.
-    double step = 0;
-    for (int j = 0; j < t.grid.sigma_count; ++j)
-      for (int k = 0; k + 1 < t.grid.mu_count; ++k)
-        step = std::max(step, max_channel(t.values[j * t.grid.mu_count + k + 1] - t.values[j * t.grid.mu_count + k]));
-    const double float_bound = 2 * eps_f * (t.grid.mu_count - 1) * step + 8 * eps_f;
+    const double float_bound = float_bounds[m];
     const glm::dvec3 got(table[i]);
     const double vs_table = max_channel(got - t.lookup(mu, sigma));
     const double vs_exact = max_channel(got - precompute::filtered_colormap_exact(material.colormap, mu, sigma));

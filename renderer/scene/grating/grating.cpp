@@ -80,7 +80,12 @@ Grating height_map(JsonObjectReader& reader, const std::filesystem::path& base) 
   if (reader.has("nm_per_sample")) units.nm_per_sample = reader.positive_number("nm_per_sample");
   if (reader.has("nm_per_unit")) units.nm_per_unit = reader.positive_number("nm_per_unit");
   units.channel = reader.string("channel", "Y");
-  HeightMap map = read_height_map(path, units);
+  HeightMap map;
+  try {
+    map = read_height_map(path, units);
+  } catch (const Error& e) {
+    reader.fail("path", e.what());  // names the scene and the key beside the file's own complaint
+  }
   if (map.samples < kMinSamples || map.samples > kMaxSamples)
     reader.fail("path", "must be a square height map of 8..4096 samples");
   Grating g;
