@@ -13,7 +13,7 @@
 #include "heightfield_reference.hpp"
 
 namespace facet {
-namespace {
+namespace heightfield_test {
 
 using test::ReferenceHeightField;
 
@@ -336,5 +336,5 @@ TEST(HeightField, ConcurrentQueriesGiveTheSerialAnswers) {
   EXPECT_EQ(serial, parallel);
 }
 
-}  // namespace
+}  // namespace heightfield_test
 }  // namespace facet

@@ -10,7 +10,7 @@
 #include "support/temp_dir.hpp"
 
 namespace facet {
-namespace {
+namespace diffraction_scene_test {
 
 constexpr const char* kGrating = R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":16,"samples":64})";
 
@@ -95,5 +95,5 @@ TEST(DiffractionScene, BadValuesGiveOneLineErrorsNamingTheKey) {
   }
 }
 
-}  // namespace
+}  // namespace diffraction_scene_test
 }  // namespace facet

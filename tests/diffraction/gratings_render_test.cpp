@@ -16,7 +16,7 @@
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
-namespace {
+namespace gratings_render_test {
 
 constexpr int kSize = 48;
 
@@ -63,5 +63,5 @@ TEST(GratingsRender, RotatedCrossedGratingPreintegratedAgreesWithSpectral) {
   expect_preintegrated_agrees("diffraction_crossed_rotated.json", 1.64 * 0.25 * glm::dvec2(0.5, 0.866));
 }
 
-}  // namespace
+}  // namespace gratings_render_test
 }  // namespace facet

@@ -14,7 +14,7 @@
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
-namespace {
+namespace orders_test {
 
 using namespace diffraction;
 using test::direction;
@@ -449,5 +449,5 @@ TEST(Orders, FiniteOnTheWholeDomain) {
       }
 }
 
-}  // namespace
+}  // namespace orders_test
 }  // namespace facet

@@ -19,7 +19,7 @@
 #include "vk/memory_limits.hpp"
 
 namespace facet {
-namespace {
+namespace preintegrated_slices_test {
 
 // Every cell start c (its words are [c, c + overlap)) must find all its words in binding c / S,
 // each binding at most binding_words long, the bindings together covering every word.
@@ -116,5 +116,5 @@ TEST(PreintegratedSlices, TablesPastDeviceMemoryAreRefusedWithOneLine) {
   }
 }
 
-}  // namespace
+}  // namespace preintegrated_slices_test
 }  // namespace facet

@@ -17,7 +17,7 @@
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
-namespace {
+namespace preintegrated_test {
 
 using namespace diffraction;
 using test::direction;
@@ -333,5 +333,5 @@ TEST(Preintegrated, TooLargeTablesAreRefused) {
   }
 }
 
-}  // namespace
+}  // namespace preintegrated_test
 }  // namespace facet

@@ -17,6 +17,7 @@
 #include "gpu/direct_pass.hpp"
 #include "image/exr_io.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/facet_paths.hpp"
 #include "support/run_command.hpp"
 #include "support/vulkan_fixture.hpp"
 
@@ -142,7 +143,7 @@ TEST(DiffractionFastPathsRender, MethodStringsRoundTrip) {
 }
 
 TEST(DiffractionFastPathsRender, CliFlagsPickTheMethodAndGoIntoTheMetadata) {
-  const std::string facet = FACET_EXECUTABLE;
+  const std::string facet = kFacet;
   const std::filesystem::path out = std::filesystem::path(FACET_BINARY_DIR) / "render_fast_paths_test.exr";
   auto r = test::run_command(facet + " render " + kPlate.string() + " --width 16 --height 16 --diffraction orders " +
                              "--wavelengths 24 --taylor 6 -o " + out.string());

@@ -17,7 +17,7 @@
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
-namespace {
+namespace heightfield_trace_test {
 
 Scene scene(const std::string& name) { return load_scene(std::string(FACET_SOURCE_DIR) + "/scenes/" + name + ".json"); }
 
@@ -133,5 +133,5 @@ TEST(HeightFieldTrace, FieldsBeyondTheLoopBoundAreRefused) {
   EXPECT_NO_THROW(gpu::DirectPass(*context, s, gpu::RenderMethod::parse("mip")));
 }
 
-}  // namespace
+}  // namespace heightfield_trace_test
 }  // namespace facet

@@ -13,7 +13,7 @@
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
-namespace {
+namespace microsurface_methods_test {
 
 constexpr int kWidth = 64, kHeight = 36;
 constexpr int kReferenceGrid = 12;
@@ -154,5 +154,5 @@ TEST(MicrosurfaceMethods, FilteredEqualsNaiveUnderMagnification) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
-}  // namespace
+}  // namespace microsurface_methods_test
 }  // namespace facet

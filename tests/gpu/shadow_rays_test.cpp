@@ -14,7 +14,7 @@
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
-namespace {
+namespace shadow_rays_test {
 
 constexpr int kWidth = 96, kHeight = 64;
 
@@ -106,5 +106,5 @@ TEST(ShadowRays, InsideASphereItsFarWallShadowsEveryPoint) {
   EXPECT_LE(worst, 1e-6);
 }
 
-}  // namespace
+}  // namespace shadow_rays_test
 }  // namespace facet

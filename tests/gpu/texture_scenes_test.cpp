@@ -18,7 +18,7 @@
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
-namespace {
+namespace texture_scenes_test {
 
 constexpr int kWidth = 64, kHeight = 36;
 
@@ -77,5 +77,5 @@ TEST(TextureScenes, FilteredBeatsNaiveAndMipOnEveryTexturedScene) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
-}  // namespace
+}  // namespace texture_scenes_test
 }  // namespace facet

@@ -14,7 +14,7 @@
 
 #include "kernels/shared.hpp"
 
-namespace {
+namespace microflake_brdf_test {
 
 using namespace facet::kernels;
 constexpr double kPi = std::numbers::pi;
@@ -179,4 +179,4 @@ TEST(MicroflakeBrdf, AlbedoMatchesScatteringProcess) {
   }
 }
 
-}  // namespace
+}  // namespace microflake_brdf_test

@@ -13,7 +13,7 @@
 #include "kernels/shared.hpp"
 #include "support/chi_square.hpp"
 
-namespace {
+namespace visible_normal_sampling_test {
 
 using namespace facet::kernels;
 constexpr double kPi = std::numbers::pi;
@@ -145,4 +145,4 @@ TEST(VisibleNormalSampling, FloatExtremes) {
   }
 }
 
-}  // namespace
+}  // namespace visible_normal_sampling_test

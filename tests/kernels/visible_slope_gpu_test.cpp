@@ -18,7 +18,7 @@
 #include "visible_slope_cases.hpp"
 
 namespace facet {
-namespace {
+namespace visible_slope_gpu_test {
 
 using test::SlopeCase;
 
@@ -90,5 +90,5 @@ TEST(VisibleSlopeGpu, FloatShaderMatchesDoubleKernelOverTheDomain) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
-}  // namespace
+}  // namespace visible_slope_gpu_test
 }  // namespace facet

@@ -14,7 +14,7 @@
 #include "reference_visible_slope.hpp"
 #include "visible_slope_cases.hpp"
 
-namespace {
+namespace visible_slope_test {
 
 using namespace facet;
 using test::Errors;
@@ -190,4 +190,4 @@ TEST(VisibleSlope, MatchesWeightedSlopeSamples) {
   }
 }
 
-}  // namespace
+}  // namespace visible_slope_test

@@ -14,7 +14,7 @@
 #include "precompute/colormap_filter.hpp"
 #include "precompute/prefiltered_colormap.hpp"
 
-namespace {
+namespace prefiltered_colormap_test {
 
 using facet::Colormap;
 using facet::precompute::PrefilteredColormap;
@@ -140,4 +140,4 @@ TEST(PrefilteredColormap, ExtremeInputsClampToTheGrid) {
     }
 }
 
-}  // namespace
+}  // namespace prefiltered_colormap_test

@@ -13,7 +13,7 @@
 #include "scene/scene_loader.hpp"
 
 namespace facet {
-namespace {
+namespace camera_path_test {
 
 using Json = nlohmann::json;
 
@@ -164,5 +164,5 @@ TEST(CameraPath, BadPathsAreOneLineErrors) {
             std::string::npos);
 }
 
-}  // namespace
+}  // namespace camera_path_test
 }  // namespace facet

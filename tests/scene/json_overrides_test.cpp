@@ -6,7 +6,7 @@
 #include "common/json_overrides.hpp"
 
 namespace facet {
-namespace {
+namespace json_overrides_test {
 
 using Json = nlohmann::json;
 
@@ -66,5 +66,5 @@ TEST(JsonOverrides, TheListIsKeptAsAJsonArray) {
             R"(["camera.width=320","light.irradiance=[1, 2, 3]"])");
 }
 
-}  // namespace
+}  // namespace json_overrides_test
 }  // namespace facet
