@@ -1,15 +1,13 @@
 // index.html: a static page, per scene the plots (inline, so their tooltips work), the table of every
 // time and metric, the reference and each method's image and FLIP heat map side by side with the heat
 // maps' colour bar; then the kernel-stability table.
-#include <algorithm>
-#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <sstream>
-
-#include <glm/vec3.hpp>
+#include <vector>
 
 #include "common/counted.hpp"
-#include "image/colormap.hpp"
+#include "image/heatmap.hpp"
 #include "report/headline.hpp"
 #include "report/report_files.hpp"
 #include "report/svg_plot.hpp"
@@ -25,13 +23,6 @@ constexpr const char* kStyle =
     ".method img{display:block;max-width:320px}.front{color:#c33;font-weight:bold}.error{color:#c00}"
     ".plots{display:flex;flex-wrap:wrap;gap:12px}";
 
-std::string hex_colour(const glm::vec3& srgb) {
-  char buffer[8];
-  auto byte = [](float v) { return static_cast<int>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", byte(srgb.r), byte(srgb.g), byte(srgb.b));
-  return buffer;
-}
-
 // The heat maps' scale: magma from 0 to kHeatmapMaxFlip, with ticks at quarters. `id` names its
 // gradient, unique in the page.
 std::string flip_colour_bar(const std::string& id) {
@@ -40,8 +31,16 @@ std::string flip_colour_bar(const std::string& id) {
   svg << "<svg class=\"colorbar\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kBarWidth + 2 * kLeft + 40
       << "\" height=\"40\" font-family=\"sans-serif\" font-size=\"10\"><title>FLIP per pixel, 0 to "
       << format_3g(kHeatmapMaxFlip) << "</title>\n<defs><linearGradient id=\"" << id << "\">";
-  for (int k = 0; k <= 16; ++k)
-    svg << "<stop offset=\"" << k / 16.0 << "\" stop-color=\"" << hex_colour(magma(k / 16.0)) << "\"/>";
+  // The stops' colours are those of heat-map pixels of these values.
+  constexpr int kStops = 17;
+  ScalarImage values(kStops, 1);
+  for (int k = 0; k < kStops; ++k) values.values[k] = static_cast<float>(kHeatmapMaxFlip * k / (kStops - 1));
+  const std::vector<std::uint8_t> rgb = heatmap_rgb8(values, kHeatmapMaxFlip);
+  for (int k = 0; k < kStops; ++k) {
+    char colour[8];
+    std::snprintf(colour, sizeof colour, "#%02x%02x%02x", rgb[3 * k], rgb[3 * k + 1], rgb[3 * k + 2]);
+    svg << "<stop offset=\"" << k / (kStops - 1.0) << "\" stop-color=\"" << colour << "\"/>";
+  }
   svg << "</linearGradient></defs>\n<rect x=\"" << kLeft << "\" y=\"4\" width=\"" << kBarWidth
       << "\" height=\"14\" fill=\"url(#" << id << ")\"/>\n";
   for (int k = 0; k <= 4; ++k) {
