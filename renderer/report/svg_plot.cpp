@@ -17,6 +17,7 @@ constexpr double kWidth = 480, kHeight = 320;
 constexpr double kLeft = 64, kRight = 16, kTop = 28, kBottom = 44;
 constexpr double kPointRadius = 3.5;
 constexpr double kLegendLine = 14;  // px between legend lines under the plot
+constexpr double kLabelGap = 1;     // px kept clear around a label, more than the 0.005 px of rounding its position
 
 struct Box {
   double left, top, right, bottom;
@@ -55,8 +56,9 @@ std::vector<std::optional<PlacedLabel>> place_labels(const std::vector<PlotPoint
         const double left = dx > 0 ? x + offset : dx < 0 ? x - offset - width : x - width / 2;
         const double top = dy > 0 ? y + offset : dy < 0 ? y - offset - height : y - height / 2;
         const Box box{left, top, left + width, top + height};
+        const Box clearance{left - kLabelGap, top - kLabelGap, left + width + kLabelGap, top + height + kLabelGap};
         if (!box.inside(area) ||
-            std::any_of(obstacles.begin(), obstacles.end(), [&](const Box& o) { return box.intersects(o); }))
+            std::any_of(obstacles.begin(), obstacles.end(), [&](const Box& o) { return clearance.intersects(o); }))
           continue;
         placed[i] = PlacedLabel{box, distance > 0.0};
         obstacles.push_back(box);
