@@ -36,6 +36,7 @@ struct BenchRecord {
 // error, or time_ms (median; device time when there is one, else wall), time_ms_min, time_ms_max,
 // time_source ("gpu" | "wall"), wall_ms (median), wall_ms_min, wall_ms_max, gpu_ms (median or null),
 // repeats, prepare_ms, phases ({name: wall ms}), the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim, flip), image, heatmap.
+// results.json adds `schema` to each (report_files.hpp).
 nlohmann::json to_json(const BenchRecord& record);
 
 }  // namespace facet::report

@@ -17,6 +17,7 @@
 #include "image/png_io.hpp"
 #include "image/thumbnail.hpp"
 #include "report/method_catalogue.hpp"
+#include "report/output_folder.hpp"
 #include "report/reference_cache.hpp"
 #include "report/run_info.hpp"
 #include "report/svg_plot.hpp"
@@ -80,7 +81,8 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
     record.image = scene_name + "/" + file_stem(method.name) + ".png";
     record.heatmap = scene_name + "/" + file_stem(method.name) + ".flip.png";
     write_png_preview(out_dir / record.image, thumbnail(first.image, kThumbnailWidth));
-    write_heatmap_png(out_dir / record.heatmap, thumbnail(flip_map(first.image, reference), kThumbnailWidth), 1.0);
+    write_heatmap_png(out_dir / record.heatmap, thumbnail(flip_map(first.image, reference), kThumbnailWidth),
+                      kHeatmapMaxFlip);
   } catch (const std::exception& e) {
     record.error = e.what();
     record.timing = {};
@@ -137,19 +139,27 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   const std::vector<CatalogueEntry> methods = select_methods(scene_features(scene), options.quick, options.methods);
   ProgressBar progress("bench " + run.name, static_cast<std::int64_t>(methods.size()) * (bench.repeats + 1));
   std::int64_t step = 0;
-  std::vector<PlotPoint> points;
+  std::vector<PlotPoint> points, wall_points;
   for (std::size_t i = 0; i < methods.size(); ++i) {
     BenchRecord record = measure_method(context, scene, methods[i], reference.image, bench.repeats, options.out_dir,
                                         run.name, base, [&] { progress.update(++step); });
     step = static_cast<std::int64_t>(i + 1) * (bench.repeats + 1);  // a failed method skips its remaining runs
     progress.update(step);
-    if (record.ok()) points.push_back({record.method, record.time_ms(), record.comparison.rmse});
+    if (record.ok()) {
+      points.push_back({record.method, record.time_ms(), record.comparison.rmse});
+      wall_points.push_back({record.method, record.timing.wall_ms.median, record.comparison.rmse});
+    }
     bench.records.push_back(std::move(record));
   }
   progress.finish();
   run.plot = run.name + "/speed_error.svg";
-  write_text(options.out_dir / run.plot, speed_error_svg(points, {run.name + ": speed vs error",
-                                                                  "time per frame (ms, median)", "RMSE vs reference"}));
+  run.plot_svg =
+      speed_error_svg(points, {run.name + ": speed vs error", "time per frame (ms, median)", "RMSE vs reference"});
+  write_text(options.out_dir / run.plot, run.plot_svg);
+  run.wall_plot = run.name + "/wall_error.svg";
+  run.wall_plot_svg = speed_error_svg(
+      wall_points, {run.name + ": wall time vs error", "wall time per frame (ms, median)", "RMSE vs reference"});
+  write_text(options.out_dir / run.wall_plot, run.wall_plot_svg);
 }
 
 }  // namespace
@@ -163,6 +173,10 @@ int BenchRun::exit_status() const {
 
 BenchRun run_bench(const BenchOptions& options) {
   if (options.scenes.empty()) throw Error("no scene given");
+  std::set<std::string> taken;
+  std::vector<std::string> names;
+  for (const auto& file : options.scenes) names.push_back(unique_name(file, taken));
+  prepare_output_folder(options.out_dir, names);
   std::error_code error;
   std::filesystem::create_directories(options.out_dir, error);
   if (error) throw Error(options.out_dir.string() + ": cannot create the output directory: " + error.message());
@@ -180,11 +194,10 @@ BenchRun run_bench(const BenchOptions& options) {
   bench.device = context.info().name;
   const std::filesystem::path cache_dir = options.cache_dir.empty() ? options.out_dir / "cache" : options.cache_dir;
 
-  std::set<std::string> names;
-  for (const auto& file : options.scenes) {
+  for (std::size_t i = 0; i < options.scenes.size(); ++i) {
     SceneRun run;
-    run.name = unique_name(file, names);
-    run.scene_file = file.string();
+    run.name = names[i];
+    run.scene_file = options.scenes[i].string();
     run_scene(context, options, cache_dir, run, bench);
     bench.scenes.push_back(run);
   }

@@ -14,6 +14,9 @@
 
 namespace facet::report {
 
+// The FLIP value the heat maps' top colour stands for (index.html's colour bar shows the scale).
+constexpr double kHeatmapMaxFlip = 1.0;
+
 struct BenchOptions {
   std::vector<std::filesystem::path> scenes;
   std::filesystem::path out_dir;
@@ -37,7 +40,8 @@ struct SceneRun {
   std::string reference_key;
   bool reference_cache_hit = false;
   double reference_ms = 0.0;
-  std::string reference_image, plot;  // relative to out_dir
+  std::string reference_image, plot, wall_plot;  // relative to out_dir; plot: x = time_ms, wall_plot: x = wall_ms
+  std::string plot_svg, wall_plot_svg;           // their text, for index.html to inline
 };
 
 struct BenchRun {

@@ -1,5 +1,10 @@
-// The README's headline per scene: `filtered` next to the cheapest `ss:K` that is at least as
-// accurate, and how much faster filtered is.
+// The headline per scene: the method that wins it against supersampling, by one stated rule.
+//
+// A candidate is any method but the baselines `naive` and `ss:K`. It beats supersampling if no ss:K
+// that ran is both at least as accurate (RMSE <=) and at most as slow (time <=). The winner is the
+// most accurate candidate that beats supersampling (ties: the faster). It is on the Pareto front of
+// the candidates and ss:K: one dominating it would beat supersampling with a lower RMSE. Beside it
+// stands the cheapest ss:K at least as accurate, if one ran, and the speed-up over it.
 #pragma once
 
 #include <optional>
@@ -12,12 +17,12 @@ namespace facet::report {
 
 struct Headline {
   std::string scene;
-  BenchRecord filtered;
-  std::optional<BenchRecord> supersampled;  // the cheapest ss:K with rmse <= filtered's; none if no K reaches it
-  double speedup() const { return supersampled ? supersampled->time_ms() / filtered.time_ms() : 0.0; }
+  std::optional<BenchRecord> winner;        // none: every candidate has an ss:K as accurate and as fast
+  std::optional<BenchRecord> supersampled;  // the cheapest ss:K with rmse <= the winner's; none if no K reaches it
+  double speedup() const { return winner && supersampled ? supersampled->time_ms() / winner->time_ms() : 0.0; }
 };
 
-// One entry per scene with a successful `filtered` record, in the order scenes first appear.
+// One entry per scene with a successful candidate, in the order scenes first appear.
 std::vector<Headline> headlines(const std::vector<BenchRecord>& records);
 
 }  // namespace facet::report

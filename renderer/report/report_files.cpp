@@ -15,6 +15,25 @@ std::string format_3g(double value) {
 
 std::string format_3g(const std::optional<double>& value) { return value ? format_3g(*value) : "–"; }
 
+const std::vector<MetricColumn>& metric_columns() {
+  auto spread = [](const Spread& s) { return format_3g(s.min) + "–" + format_3g(s.max); };
+  auto gpu_ms = [](const BenchRecord& r) { return r.timing.has_gpu_time ? format_3g(r.timing.gpu_ms.median) : "–"; };
+  static const std::vector<MetricColumn> columns = {
+      {"time ms", [](const BenchRecord& r) { return format_3g(r.time_ms()); }},
+      {"min–max", [=](const BenchRecord& r) { return spread(r.timing.headline()); }},
+      {"device ms", gpu_ms},
+      {"wall ms", [](const BenchRecord& r) { return format_3g(r.timing.wall_ms.median); }},
+      {"wall min–max", [=](const BenchRecord& r) { return spread(r.timing.wall_ms); }},
+      {"prepare ms", [](const BenchRecord& r) { return format_3g(r.prepare_ms); }},
+      {"RMSE", [](const BenchRecord& r) { return format_3g(r.comparison.rmse); }},
+      {"rel. MSE", [](const BenchRecord& r) { return format_3g(r.comparison.rel_mse); }},
+      {"PSNR dB", [](const BenchRecord& r) { return format_3g(r.comparison.psnr); }},
+      {"max abs", [](const BenchRecord& r) { return format_3g(r.comparison.max_abs); }},
+      {"SSIM", [](const BenchRecord& r) { return format_3g(r.comparison.ssim); }},
+      {"FLIP", [](const BenchRecord& r) { return format_3g(r.comparison.flip); }}};
+  return columns;
+}
+
 std::vector<SceneRow> scene_rows(const BenchRun& run, const std::string& scene) {
   std::vector<SceneRow> rows;
   std::vector<CostError> points;
@@ -33,7 +52,10 @@ std::vector<SceneRow> scene_rows(const BenchRun& run, const std::string& scene) 
 
 nlohmann::json results_json(const BenchRun& run) {
   nlohmann::json records = nlohmann::json::array();
-  for (const BenchRecord& record : run.records) records.push_back(to_json(record));
+  for (const BenchRecord& record : run.records) {
+    records.push_back(to_json(record));
+    records.back()["schema"] = kReportSchema;
+  }
   return records;
 }
 
@@ -48,7 +70,8 @@ nlohmann::json run_json(const BenchRun& run) {
                     {"reference_cache_hit", s.reference_cache_hit},
                     {"reference_ms", s.reference_ms},
                     {"reference_image", s.reference_image},
-                    {"plot", s.plot}});
+                    {"plot", s.plot},
+                    {"wall_plot", s.wall_plot}});
     }
     scenes.push_back(scene);
   }
@@ -64,7 +87,8 @@ nlohmann::json run_json(const BenchRun& run) {
                          {"f64", optional_number(row.f64)},
                          {"f32", optional_number(row.f32)},
                          {"gpu", optional_number(row.gpu)}});
-  return {{"machine", run.machine},
+  return {{"schema", kReportSchema},
+          {"machine", run.machine},
           {"device", run.device},
           {"facet_version", run.facet_version},
           {"date", run.date},

@@ -4,10 +4,11 @@
 //                 kernel-stability table
 //   report.md     headline, per-scene tables, stability table
 //   index.html    the same with the reference, each method's image and FLIP heat map side by side
-//                 and the speed-vs-error plots (relative links to the PNGs and SVGs)
+//                 with the heat maps' colour bar, and the speed-vs-error plots inline (their tooltips work)
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,10 @@
 #include "report/bench_run.hpp"
 
 namespace facet::report {
+
+// The layout of results.json and run.json: every record and run.json carry it as `schema`. Raise it
+// when a key changes meaning or goes; readers refuse a schema above theirs.
+constexpr int kReportSchema = 1;
 
 nlohmann::json results_json(const BenchRun& run);
 nlohmann::json run_json(const BenchRun& run);
@@ -31,6 +36,14 @@ struct SceneRow {
   bool on_front = false;
 };
 std::vector<SceneRow> scene_rows(const BenchRun& run, const std::string& scene);
+
+// The per-scene table's columns after the method, in report.md and index.html: every time and metric
+// results.json has for a successful record.
+struct MetricColumn {
+  std::string header;
+  std::function<std::string(const BenchRecord&)> cell;
+};
+const std::vector<MetricColumn>& metric_columns();
 
 // "12.3", "0.00123", "1.23e+04": three significant digits for tables.
 std::string format_3g(double value);

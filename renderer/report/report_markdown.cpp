@@ -23,19 +23,27 @@ void write_header(std::ostringstream& md, const BenchRun& run) {
      << " jittered rays per pixel, each method rendered once to warm up and then timed over "
      << counted(run.repeats, "run") << "\n\n"
      << "`time` is the median device time (GPU timestamps) per frame when the device has timestamps, else the "
-        "median wall time; `min–max` is its spread; `prepare` is the one-off set-up (buffers, precomputed "
-        "tables, pipeline) plus the warm-up frame. Errors are against the reference, with the metrics of "
+        "median wall time; `min–max` is its spread; `device` is the median device time, `wall` the median wall time "
+        "around the call (upload, submissions, read-back), each frame; `prepare` is the one-off set-up (buffers, "
+        "precomputed tables, pipeline) plus the warm-up frame. Errors are against the reference, with the metrics of "
         "`facet compare` (docs/report.md).\n\n";
 }
 
 void write_markdown_headline(std::ostringstream& md, const BenchRun& run) {
   const std::vector<Headline> lines = headlines(run.records);
   if (lines.empty()) return;
-  md << "## Headline: `filtered` against the cheapest `ss:K` as accurate\n\n"
-     << "| scene | filtered ms | filtered RMSE | cheapest ss:K with RMSE ≤ | its ms | its RMSE | speed-up |\n"
-     << "|---|---|---|---|---|---|---|\n";
+  md << "## Headline: per scene, the most accurate method that beats supersampling\n\n"
+     << "A method other than `naive` and `ss:K` beats supersampling if no `ss:K` that ran is both at least as "
+        "accurate and at most as slow (docs/report.md).\n\n"
+     << "| scene | winner | its ms | its RMSE | cheapest ss:K with RMSE ≤ | its ms | its RMSE | speed-up |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
   for (const Headline& h : lines) {
-    md << "| " << h.scene << " | " << format_3g(h.filtered.time_ms()) << " | " << format_3g(h.filtered.comparison.rmse)
+    md << "| " << h.scene << " | ";
+    if (!h.winner) {
+      md << "none: an ss:K is as accurate and as fast as every method | – | – | – | – | – | – |\n";
+      continue;
+    }
+    md << h.winner->method << " | " << format_3g(h.winner->time_ms()) << " | " << format_3g(h.winner->comparison.rmse)
        << " | ";
     if (h.supersampled)
       md << h.supersampled->method << " | " << format_3g(h.supersampled->time_ms()) << " | "
@@ -54,21 +62,22 @@ void write_markdown_scene(std::ostringstream& md, const BenchRun& run, const Sce
   }
   md << ", " << scene.width << "×" << scene.height << ", reference "
      << (scene.reference_cache_hit ? "from the cache" : "rendered in " + format_3g(scene.reference_ms) + " ms")
-     << "\n\n![" << scene.name << ": speed vs error](" << scene.plot << ")\n\n"
-     << "| method | time ms | min–max | wall ms | prepare ms | RMSE | rel. MSE | PSNR dB | SSIM | FLIP | Pareto |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << "\n\n![" << scene.name << ": speed vs error](" << scene.plot << ") ![" << scene.name << ": wall time vs error]("
+     << scene.wall_plot << ")\n\n| method |";
+  const std::vector<MetricColumn>& columns = metric_columns();
+  for (const MetricColumn& column : columns) md << " " << column.header << " |";
+  md << " Pareto |\n|---|";
+  for (std::size_t i = 0; i <= columns.size(); ++i) md << "---|";
+  md << "\n";
   for (const SceneRow& row : scene_rows(run, scene.name)) {
     const BenchRecord& r = *row.record;
+    md << "| " << r.method << " |";
     if (!r.ok()) {
-      md << "| " << r.method << " | error: " << table_cell(*r.error) << " | | | | | | | | | |\n";
+      md << " error: " << table_cell(*r.error) << " |" << std::string(columns.size(), '|') << "\n";
       continue;
     }
-    const Spread& t = r.timing.headline();
-    md << "| " << r.method << " | " << format_3g(t.median) << " | " << format_3g(t.min) << "–" << format_3g(t.max)
-       << " | " << format_3g(r.timing.wall_ms.median) << " | " << format_3g(r.prepare_ms) << " | "
-       << format_3g(r.comparison.rmse) << " | " << format_3g(r.comparison.rel_mse) << " | "
-       << format_3g(r.comparison.psnr) << " | " << format_3g(r.comparison.ssim) << " | "
-       << format_3g(r.comparison.flip) << " | " << (row.on_front ? "●" : "") << " |\n";
+    for (const MetricColumn& column : columns) md << " " << column.cell(r) << " |";
+    md << " " << (row.on_front ? "●" : "") << " |\n";
   }
   md << "\n";
 }

@@ -22,12 +22,23 @@ struct LogAxis {
   static LogAxis enclosing(const std::vector<double>& values, double pixel_lo, double pixel_hi);
 };
 
+// The labels' font metrics the placement assumes (font-size 10 sans-serif): a method name is at
+// most 0.64 em wide per character (DejaVu Sans, the widest common sans-serif, gives at most 0.629 over
+// the names of docs/bench; Arial's digits and letters are narrower), and a line spans 0.8 em above
+// the baseline and 0.25 em below it. A label's box is its text's extent by these figures.
+constexpr double kLabelFontSize = 10.0;
+constexpr double kLabelCharWidth = 0.64 * kLabelFontSize;
+constexpr double kLabelAscent = 0.8 * kLabelFontSize, kLabelDescent = 0.25 * kLabelFontSize;
+
 struct PlotLabels {
   std::string title, x_axis, y_axis;
 };
 
 // Each plotted point is a <circle> with class "point" (front members also "front") and a <title>
-// naming it; the front is a <path> with class "front".
+// naming it; the front is a <path> with class "front". Each point's name is a <text class="label">
+// (start-anchored) placed greedily where its box overlaps no other label and no point: beside the
+// point, or farther out with a <line class="leader"> to it. Names that find no place are listed in
+// <text class="legend"> lines under the plot (the SVG grows to hold them).
 std::string speed_error_svg(const std::vector<PlotPoint>& points, const PlotLabels& labels);
 
 // &, <, >, " escaped for XML text and attribute values.

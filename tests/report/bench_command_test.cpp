@@ -2,11 +2,13 @@
 // a failing method next to working ones, and the reference cache (hit, invalidation, corruption).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -87,6 +89,47 @@ void expect_record_schema(const json& r, const fs::path& out) {
   EXPECT_TRUE(fs::is_regular_file(out / r["heatmap"].get<std::string>())) << r["heatmap"];
 }
 
+std::string format_3g(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
+}
+
+// index.html: both plots inline (no <img> of an SVG) with a tooltip per point; per method a row of
+// the metrics table holding every time and metric of its results.json record; the FLIP colour bar.
+void expect_html_report(const std::string& html, const json& results) {
+  EXPECT_EQ(html.find(".svg\""), std::string::npos) << "plots are inlined, not linked";
+  int plots = 0;
+  for (std::size_t at = html.find("<svg xmlns="); at != std::string::npos; at = html.find("<svg xmlns=", at + 1)) {
+    const std::string plot = html.substr(at, html.find("</svg>", at) - at);
+    std::size_t tooltips = 0;
+    for (std::size_t t = plot.find("<title>"); t != std::string::npos; t = plot.find("<title>", t + 1)) ++tooltips;
+    EXPECT_EQ(tooltips, results.size()) << "one <title> per point";
+    ++plots;
+  }
+  EXPECT_EQ(plots, 2);  // time_ms and wall_ms against RMSE
+  auto number = [](const json& value) { return value.is_null() ? std::string("–") : format_3g(value.get<double>()); };
+  for (const json& r : results) {
+    std::vector<std::string> cells = {
+        number(r["time_ms"]), number(r["time_ms_min"]) + "–" + number(r["time_ms_max"]), number(r["gpu_ms"]),
+        number(r["wall_ms"]), number(r["wall_ms_min"]) + "–" + number(r["wall_ms_max"]), number(r["prepare_ms"])};
+    for (const char* key : {"rmse", "rel_mse", "psnr", "max_abs", "ssim", "flip"}) cells.push_back(number(r[key]));
+    std::string row = "<tr><td>" + r["method"].get<std::string>() + "</td>";
+    for (const std::string& cell : cells) row += "<td>" + cell + "</td>";
+    EXPECT_NE(html.find(row), std::string::npos) << row;
+  }
+  EXPECT_NE(html.find("wall ms</th>"), std::string::npos);
+  EXPECT_NE(html.find("prepare ms</th>"), std::string::npos);
+  // The colour bar: magma's ends (black-purple, pale yellow) and ticks from 0 to 1.
+  const std::size_t bar = html.find("<svg class=\"colorbar\"");
+  ASSERT_NE(bar, std::string::npos);
+  const std::string colour_bar = html.substr(bar, html.find("</svg>", bar) - bar);
+  EXPECT_NE(colour_bar.find("stop-color=\"#000004\""), std::string::npos) << colour_bar;
+  EXPECT_NE(colour_bar.find("stop-color=\"#fcfdbf\""), std::string::npos) << colour_bar;
+  EXPECT_NE(colour_bar.find(">0</text>"), std::string::npos);
+  EXPECT_NE(colour_bar.find(">1</text>"), std::string::npos);
+}
+
 TEST_F(Bench, QuickRunWritesAValidReport) {
   write_scene();
   const auto r = bench("");
@@ -131,9 +174,10 @@ TEST_F(Bench, QuickRunWritesAValidReport) {
   EXPECT_NE(md.find("| filtered |"), std::string::npos);
   EXPECT_NE(md.find("Headline"), std::string::npos);
   EXPECT_NE(md.find("Numerical stability"), std::string::npos);
-  const std::string html = test::read_text(out / "index.html");
-  EXPECT_NE(html.find("tiny/speed_error.svg"), std::string::npos);
-  EXPECT_NE(html.find("tiny/filtered.flip.png"), std::string::npos);
+  EXPECT_NE(md.find("tiny/wall_error.svg"), std::string::npos);
+  expect_html_report(test::read_text(out / "index.html"), results);
+  EXPECT_EQ(run["schema"], 1);
+  for (const json& record : results) EXPECT_EQ(record["schema"], 1);
 }
 
 // A mistyped method fails the command before the (slow) reference renders: nothing is written.
@@ -184,6 +228,42 @@ TEST_F(Bench, SetOverridesTheScenesAndIsRecorded) {
   EXPECT_EQ(read_json("run.json")["set"], set);
   ASSERT_EQ(bench(with_set).exit_code, 0);
   EXPECT_TRUE(reference_cache_hit());
+}
+
+// A reused --out: a previous report's files and scene folders go (the cache stays); a file no report
+// writes, or a run.json of a newer schema, makes the run refuse in one line before any work.
+TEST_F(Bench, AReusedOutFolderIsCleanedOrRefused) {
+  write_scene();
+  ASSERT_EQ(bench("--no-stability --methods naive").exit_code, 0);
+  fs::copy_file(dir_ / "tiny.json", dir_ / "other.json");
+  const auto other =
+      test::run_command(kFacet + " bench '" + (dir_ / "other.json").string() + "' --out '" + (dir_ / "out").string() +
+                        "' --quick --width 48 --grid 4 --no-stability --methods naive");
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "tiny")) << "the previous report's scene folder stays";
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / "other" / "naive.png"));
+  EXPECT_EQ(read_json("results.json").size(), 1u);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "out" / "cache"), fs::directory_iterator()), 2)
+      << "the cache keeps the first scene's reference";
+
+  const std::string before = test::read_text(dir_ / "out" / "results.json");
+  std::ofstream(dir_ / "out" / "notes.txt") << "mine";
+  auto r = bench("--no-stability --methods naive");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("facet: error: --out: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("notes.txt was not written by facet bench"), std::string::npos) << r.err;
+  EXPECT_EQ(test::read_text(dir_ / "out" / "results.json"), before) << "nothing is removed before refusing";
+  fs::remove(dir_ / "out" / "notes.txt");
+
+  json run = read_json("run.json");
+  run["schema"] = 99;
+  std::ofstream(dir_ / "out" / "run.json") << run.dump();
+  r = bench("--no-stability --methods naive");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("is a report of schema 99, which this facet (schema 1) does not read"), std::string::npos)
+      << r.err;
 }
 
 TEST_F(Bench, ABrokenSceneFailsTheRunButNotTheOtherScenes) {

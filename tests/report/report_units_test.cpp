@@ -1,8 +1,11 @@
 // The pieces of `facet bench` that need no device: Pareto front, log-log SVG, timing statistics,
 // the headline choice, the method catalogue and the scene dependency hash.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <regex>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -103,6 +106,70 @@ TEST(SvgPlot, IsWellFormedAndPlacesPointsOnLogScales) {
   EXPECT_NE(svg.find("<path class=\"front\""), std::string::npos);
 }
 
+struct TextBox {
+  std::string text;
+  double left, top, right, bottom;
+  bool legend = false;
+};
+
+// The label and legend texts of a plot with their boxes by the font metrics svg_plot.hpp states.
+std::vector<TextBox> text_boxes(const std::string& svg) {
+  std::vector<TextBox> boxes;
+  const std::regex text(R"re(<text class="(label|legend)" x="([0-9.]+)" y="([0-9.]+)">([^<]*)</text>)re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator(); ++it) {
+    const std::string name = std::regex_replace((*it)[4].str(), std::regex("&amp;"), "&");
+    const double x = std::stod((*it)[2]), y = std::stod((*it)[3]);
+    boxes.push_back({name, x, y - kLabelAscent, x + kLabelCharWidth * static_cast<double>(name.size()),
+                     y + kLabelDescent, (*it)[1] == "legend"});
+  }
+  return boxes;
+}
+
+// Crowded points (the diffraction plate's cluster of preintegrated and orders methods, and worse):
+// no two label boxes meet, none covers a point, all lie in the picture, and every name is shown.
+TEST(SvgPlot, LabelsOfClusteredPointsDoNotOverlap) {
+  for (int count : {6, 14, 40}) {
+    std::vector<PlotPoint> points;
+    for (int i = 0; i < count; ++i)
+      points.push_back({"preintegrated:wavelengths:" + std::to_string(i), 10.0 + 0.05 * i, 0.01 * (1.0 + 0.01 * i)});
+    points.push_back({"ss:4", 1000.0, 0.001});
+    const std::string svg = speed_error_svg(points, {"t", "time", "error"});
+    ASSERT_TRUE(tags_balanced(svg));
+    std::smatch size;
+    ASSERT_TRUE(std::regex_search(svg, size, std::regex(R"re(viewBox="0 0 ([0-9.]+) ([0-9.]+)")re")));
+    const double width = std::stod(size[1]), height = std::stod(size[2]);
+    const std::vector<TextBox> boxes = text_boxes(svg);
+    std::set<std::string> shown;  // the labels, and the names the legend lines list after "also: "
+    for (const TextBox& b : boxes) {
+      if (!b.legend) {
+        shown.insert(b.text);
+        continue;
+      }
+      std::stringstream names(b.text.substr(b.text.rfind("also: ", 0) == 0 ? 6 : 0));
+      for (std::string name; std::getline(names, name, ',');)
+        if (name.find_first_not_of(' ') != std::string::npos) shown.insert(name.substr(name.find_first_not_of(' ')));
+    }
+    for (const PlotPoint& p : points) EXPECT_TRUE(shown.count(p.label)) << p.label << " (" << count << ")";
+    const std::regex circle(R"re(<circle class="point[^"]*" cx="([0-9.]+)" cy="([0-9.]+)" r="([0-9.]+)")re");
+    std::vector<TextBox> points_boxes;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), circle); it != std::sregex_iterator(); ++it) {
+      const double x = std::stod((*it)[1]), y = std::stod((*it)[2]), r = std::stod((*it)[3]);
+      points_boxes.push_back({"point", x - r, y - r, x + r, y + r, false});
+    }
+    ASSERT_EQ(points_boxes.size(), points.size());
+    auto meet = [](const TextBox& a, const TextBox& b) {
+      return a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+    };
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      EXPECT_TRUE(boxes[i].left >= 0 && boxes[i].right <= width && boxes[i].top >= 0 && boxes[i].bottom <= height)
+          << boxes[i].text;
+      for (std::size_t j = i + 1; j < boxes.size(); ++j)
+        EXPECT_FALSE(meet(boxes[i], boxes[j])) << boxes[i].text << " and " << boxes[j].text << " (" << count << ")";
+      for (const TextBox& point : points_boxes) EXPECT_FALSE(meet(boxes[i], point)) << boxes[i].text;
+    }
+  }
+}
+
 TEST(Timing, MedianAndSpread) {
   const Spread odd = spread_of({5, 1, 3});
   EXPECT_EQ(odd.median, 3);
@@ -131,20 +198,65 @@ BenchRecord record(const std::string& scene, const std::string& method, double m
   return r;
 }
 
-TEST(Headline, PicksTheCheapestSupersamplingAtLeastAsAccurate) {
-  std::vector<BenchRecord> records = {record("a", "filtered", 2, 0.010), record("a", "ss:2", 3, 0.020),
-                                      record("a", "ss:8", 40, 0.009),    record("a", "ss:16", 160, 0.005),
-                                      record("a", "mip", 1, 0.001),      record("b", "filtered", 1, 0.001),
-                                      record("b", "ss:16", 50, 0.002),   record("c", "naive", 1, 0.1)};
-  records.push_back(record("a", "ss:4", 10, 0.010));
+// Scene a: colormip is faster and more accurate than filtered, so it wins (the headline once named
+// filtered). mip is more accurate still but ss:8 is as accurate and faster. Scene b: filtered beats
+// every ss:K. Scene c: only baselines, no line. Scene d: supersampling beats every candidate.
+TEST(Headline, NamesTheMostAccurateMethodThatBeatsSupersampling) {
+  std::vector<BenchRecord> records = {
+      record("a", "filtered", 2, 0.010), record("a", "colormip", 1.5, 0.008), record("a", "mip", 50, 0.004),
+      record("a", "ss:2", 3, 0.020),     record("a", "ss:8", 40, 0.004),      record("a", "ss:16", 160, 0.003),
+      record("a", "naive", 0.5, 0.05),   record("b", "filtered", 1, 0.001),   record("b", "ss:16", 50, 0.002),
+      record("c", "naive", 1, 0.1),      record("d", "filtered", 9, 0.01),    record("d", "ss:4", 8, 0.01)};
+  records.push_back(record("a", "ss:4", 1, 0.001));
   records.back().error = "failed";  // an error record never counts
   const std::vector<Headline> lines = headlines(records);
-  ASSERT_EQ(lines.size(), 2u);
+  ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0].scene, "a");
-  ASSERT_TRUE(lines[0].supersampled.has_value());
+  ASSERT_TRUE(lines[0].winner && lines[0].supersampled);
+  EXPECT_EQ(lines[0].winner->method, "colormip");
   EXPECT_EQ(lines[0].supersampled->method, "ss:8");
-  EXPECT_DOUBLE_EQ(lines[0].speedup(), 20.0);
+  EXPECT_DOUBLE_EQ(lines[0].speedup(), 40.0 / 1.5);
+  EXPECT_EQ(lines[1].winner->method, "filtered");
   EXPECT_FALSE(lines[1].supersampled.has_value());
+  EXPECT_EQ(lines[2].scene, "d");
+  EXPECT_FALSE(lines[2].winner.has_value());
+}
+
+// The rule against brute force on random scenes: the winner beats supersampling, nothing that beats
+// it is more accurate, and it is on the scene's Pareto front.
+TEST(Headline, WinnerFollowsTheRuleOnRandomScenes) {
+  unsigned state = 3;
+  auto next = [&] { return 1.0 + (state = state * 1103515245u + 12345u) % 1000; };
+  const char* methods[] = {"filtered", "colormip", "mip", "filtered:ss:2", "ss:1", "ss:2", "ss:4", "ss:8"};
+  for (int scene = 0; scene < 50; ++scene) {
+    std::vector<BenchRecord> records;
+    for (const char* m : methods) records.push_back(record("s", m, next(), next() / 1000));
+    auto beats = [&](const BenchRecord& r) {
+      return std::none_of(records.begin(), records.end(), [&](const BenchRecord& s) {
+        return s.method.rfind("ss:", 0) == 0 && s.comparison.rmse <= r.comparison.rmse && s.time_ms() <= r.time_ms();
+      });
+    };
+    const std::vector<Headline> lines = headlines(records);
+    ASSERT_EQ(lines.size(), 1u);
+    std::vector<CostError> points;
+    for (const BenchRecord& r : records) points.push_back({r.time_ms(), r.comparison.rmse});
+    const std::vector<std::size_t> front = pareto_front(points);
+    bool any_beats = false;
+    for (std::size_t i = 0; i < 4; ++i) any_beats |= beats(records[i]);
+    ASSERT_EQ(lines[0].winner.has_value(), any_beats) << scene;
+    if (!any_beats) continue;
+    const BenchRecord& winner = *lines[0].winner;
+    EXPECT_TRUE(beats(winner));
+    for (std::size_t i = 0; i < 4; ++i) {
+      if (beats(records[i])) {
+        EXPECT_LE(winner.comparison.rmse, records[i].comparison.rmse);
+      }
+    }
+    const auto index =
+        std::find_if(records.begin(), records.end(), [&](const BenchRecord& r) { return r.method == winner.method; }) -
+        records.begin();
+    EXPECT_NE(std::find(front.begin(), front.end(), static_cast<std::size_t>(index)), front.end()) << scene;
+  }
 }
 
 TEST(MethodCatalogue, AppliesTextureMethodsOnlyToScenesWithSubPixelDetail) {
