@@ -151,8 +151,11 @@ void add_camera(const tinygltf::Model& model, const Hierarchy& h, double fps, Js
   doc["camera_path"] = {{"frames", frames}, {"interpolation", "linear"}, {"keys", keys}};
 }
 
-// The one directional light among the scene's nodes, as facet's "light".
+// The one directional light among the scene's nodes, as facet's "light"; without one, facet's default
+// light, written out so that `--set light.irradiance=...` has a key to change.
 void add_light(const tinygltf::Model& model, const Hierarchy& h, Json& doc) {
+  const DirectionalLight default_light;
+  doc["light"] = {{"direction", json_vec3(default_light.direction)}, {"irradiance", json_vec3(default_light.irradiance)}};
   std::optional<size_t> lit_by;
   for (size_t i = 0; i < model.nodes.size(); ++i) {
     const auto ext = model.nodes[i].extensions.find(kLightsExtension);
@@ -216,8 +219,12 @@ void add_materials(const tinygltf::Model& model, const std::vector<std::string>&
   if (needs_default) doc["materials"][keys.back()] = {{"type", "lambert"}, {"albedo", {1.0, 1.0, 1.0}}};
 }
 
-// The root's extras.facet: the frame rate of camera paths, ambient and background.
+// The root's extras.facet: the frame rate of camera paths, ambient and background (facet's defaults,
+// written out for `--set`, when not given).
 double add_root_settings(const tinygltf::Model& model, const std::string& file, Json& doc) {
+  const Scene defaults;
+  doc["ambient"] = json_vec3(defaults.ambient);
+  doc["background"] = json_vec3(defaults.background);
   const Json e = parse_extras(model.extras_json_string, file);
   if (!e.is_object() || !e.contains("facet")) return kDefaultGltfFps;
   JsonObjectReader r(e["facet"], file, "extras.facet");

@@ -151,6 +151,12 @@ TEST(GltfScene, DirectionalLightPointsAlongTheNodesPlusZ) {
   const glm::dvec3 axis = glm::normalize(glm::dvec3(1, 0, 1)), parent_axis(0, 1, 0);
   const double angle = -1.1, parent_angle = 0.6;
   GltfTestWriter w = scene_writer();
+  // Without a light: facet's default one, which --set can change like any key.
+  const Scene unlit = load(w, "no_light", {"light.irradiance=[2, 3, 4]", "ambient=[0.5, 0.5, 0.5]"});
+  EXPECT_EQ(unlit.light.direction, DirectionalLight{}.direction);
+  EXPECT_EQ(unlit.light.irradiance, glm::dvec3(2, 3, 4));
+  EXPECT_EQ(unlit.ambient, glm::dvec3(0.5));
+
   w.doc()["extensionsUsed"] = {"KHR_lights_punctual"};
   w.doc()["extensionsRequired"] = {"KHR_lights_punctual"};  // understood, so allowed
   w.doc()["extensions"]["KHR_lights_punctual"]["lights"] = {
