@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <tiny_gltf.h>
+#include <glm/glm.hpp>
 
 namespace facet {
 

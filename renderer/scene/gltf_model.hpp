@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <tiny_gltf.h>
+#include <glm/glm.hpp>
 
 #include "scene/scene.hpp"
 

@@ -47,8 +47,7 @@ struct Hierarchy {
 };
 
 Hierarchy read_hierarchy(const tinygltf::Model& model) {
-  Hierarchy h{std::vector<std::optional<glm::dmat4>>(model.nodes.size()), std::vector<int>(model.nodes.size(), -1),
-              {}};
+  Hierarchy h{std::vector<std::optional<glm::dmat4>>(model.nodes.size()), std::vector<int>(model.nodes.size(), -1), {}};
   for (size_t i = 0; i < model.nodes.size(); ++i)
     for (int c : model.nodes[i].children)
       if (c >= 0 && static_cast<size_t>(c) < model.nodes.size()) h.parent[static_cast<size_t>(c)] = static_cast<int>(i);
@@ -112,14 +111,15 @@ void add_camera(const tinygltf::Model& model, const Hierarchy& h, double fps, Js
     camera["up"] = json_vec3(up);
   };
   const double span = animation ? std::round((animation->end - animation->start) * fps) : 0.0;
-  if (!(span < kMaxPathFrames))
-    throw Error(where + ": its animation lasts more than " + std::to_string(kMaxPathFrames) + " frames");
+  if (!(span < kMaxGltfPathFrames))
+    throw Error(where + ": its animation lasts more than " + std::to_string(kMaxGltfPathFrames) + " frames at " +
+                std::to_string(fps) + " fps");
   const int frames = static_cast<int>(span) + 1;
   if (frames == 1) {
-    const CameraPose pose = camera_pose(animation ? parent_world * animated_local_transform(model.nodes[node], node,
-                                                                                      *animation, animation->start)
-                                            : *h.world[node],
-                                  node);
+    const CameraPose pose = camera_pose(
+        animation ? parent_world * animated_local_transform(model.nodes[node], node, *animation, animation->start)
+                  : *h.world[node],
+        node);
     place(pose, pose.up);
     doc["camera"] = camera;
     return;
@@ -129,8 +129,8 @@ void add_camera(const tinygltf::Model& model, const Hierarchy& h, double fps, Js
     for (const tinygltf::AnimationChannel& channel : model.animations[a].channels)
       for (int n = h.parent[node]; n >= 0; n = h.parent[static_cast<size_t>(n)])
         if (channel.target_node == n && channel.target_path != "weights")
-          throw Error("animation " + std::to_string(a) + " moves node " + std::to_string(n) + ", a parent of " +
-                      where + "; only the camera node's own animation is imported");
+          throw Error("animation " + std::to_string(a) + " moves node " + std::to_string(n) + ", a parent of " + where +
+                      "; only the camera node's own animation is imported");
   // A camera path keeps one up vector, the world's +y: each frame must be upright without roll.
   const glm::dvec3 world_up(0.0, 1.0, 0.0);
   Json keys = Json::array();
@@ -155,7 +155,8 @@ void add_camera(const tinygltf::Model& model, const Hierarchy& h, double fps, Js
 // light, written out so that `--set light.irradiance=...` has a key to change.
 void add_light(const tinygltf::Model& model, const Hierarchy& h, Json& doc) {
   const DirectionalLight default_light;
-  doc["light"] = {{"direction", json_vec3(default_light.direction)}, {"irradiance", json_vec3(default_light.irradiance)}};
+  doc["light"] = {{"direction", json_vec3(default_light.direction)},
+                  {"irradiance", json_vec3(default_light.irradiance)}};
   std::optional<size_t> lit_by;
   for (size_t i = 0; i < model.nodes.size(); ++i) {
     const auto ext = model.nodes[i].extensions.find(kLightsExtension);
@@ -181,7 +182,8 @@ void add_light(const tinygltf::Model& model, const Hierarchy& h, Json& doc) {
       throw Error(where + ": its world transform is singular or not finite");
     const glm::dvec3 colour =
         light.color.size() == 3 ? glm::dvec3(light.color[0], light.color[1], light.color[2]) : glm::dvec3(1.0);
-    doc["light"] = {{"direction", json_vec3(glm::normalize(toward))}, {"irradiance", json_vec3(colour * light.intensity)}};
+    doc["light"] = {{"direction", json_vec3(glm::normalize(toward))},
+                    {"irradiance", json_vec3(colour * light.intensity)}};
   }
 }
 

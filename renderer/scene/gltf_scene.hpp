@@ -14,6 +14,9 @@ namespace facet {
 
 inline constexpr double kDefaultGltfFps = 24.0;  // frames per second of a sampled camera animation
 inline constexpr int kDefaultGltfHeight = 360;   // image height; the width keeps the camera's aspect
+// Frames of a sampled camera animation (7 minutes at 24 fps): each is a key of the path, so a stray key
+// time in a file must not allocate a million of them.
+inline constexpr int kMaxGltfPathFrames = 10000;
 
 // The camera, light, camera_path, materials, ambient and background become a facet JSON scene
 // document, to which `overrides` apply ("camera.width=320") and which parse_scene() validates as any

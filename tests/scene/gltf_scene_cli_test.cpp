@@ -28,7 +28,8 @@ const std::string kCourtyard = (kScenes / "gltf_courtyard.gltf").string();
 
 TEST(GltfSceneCli, TheShippedSceneRendersWithoutAJsonScene) {
   test::TempDir dir;
-  const auto r = run_command(kFacet + " render " + kCourtyard + " --width 48 --no-preview -o " + (dir / "a.exr").string());
+  const auto r =
+      run_command(kFacet + " render " + kCourtyard + " --width 48 --no-preview -o " + (dir / "a.exr").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Image image = read_exr(dir / "a.exr");
   EXPECT_EQ(image.width, 48);
@@ -77,19 +78,20 @@ class GltfAndJson : public ::testing::Test {
     const double pitch = -std::atan(1.0 / 3.0), tilt = -std::asin(0.6);
     doc["extensionsUsed"] = {"KHR_lights_punctual"};
     doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "directional"}, {"intensity", 2.0}}};
-    doc["nodes"] = {{{"mesh", 0}},
-                    {{"camera", 0}, {"translation", {0, 1, 3}}, {"rotation", {std::sin(pitch / 2), 0, 0, std::cos(pitch / 2)}}},
-                    {{"rotation", {std::sin(tilt / 2), 0, 0, std::cos(tilt / 2)}},
-                     {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}};
+    doc["nodes"] = {
+        {{"mesh", 0}},
+        {{"camera", 0}, {"translation", {0, 1, 3}}, {"rotation", {std::sin(pitch / 2), 0, 0, std::cos(pitch / 2)}}},
+        {{"rotation", {std::sin(tilt / 2), 0, 0, std::cos(tilt / 2)}},
+         {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}};
     doc["scenes"] = {{{"nodes", {0, 1, 2}}}};
     w.write_gltf(dir_ / "scene.gltf");
     // The same by hand: looking from (0, 1, 3) at the origin; light from +z tilted up to (0, 0.6, 0.8).
-    std::ofstream(dir_ / "scene.json") << Json({{"camera", {{"position", {0, 1, 3}}, {"target", {0, 0, 0}},
-                                                           {"fov_y", 0.6 * 180.0 / std::acos(-1.0)}}},
-                                                {"light", {{"direction", {0, 0.6, 0.8}}, {"irradiance", {2, 2, 2}}}},
-                                                {"materials", {{"Gold", kGold}}},
-                                                {"objects", {{{"type", "mesh"}, {"file", "scene.gltf"}, {"material", "Gold"}}}}})
-                                              .dump();
+    std::ofstream(dir_ / "scene.json")
+        << Json({{"camera", {{"position", {0, 1, 3}}, {"target", {0, 0, 0}}, {"fov_y", 0.6 * 180.0 / std::acos(-1.0)}}},
+                 {"light", {{"direction", {0, 0.6, 0.8}}, {"irradiance", {2, 2, 2}}}},
+                 {"materials", {{"Gold", kGold}}},
+                 {"objects", {{{"type", "mesh"}, {"file", "scene.gltf"}, {"material", "Gold"}}}}})
+               .dump();
   }
   Image render(const std::string& command, const std::string& scene) {
     const fs::path out = dir_ / (command + "_" + scene + ".exr");
@@ -124,8 +126,10 @@ TEST_F(GltfAndJson, RenderTheSameImageOnTheCpu) {
 
 TEST(GltfSceneCli, ARefusedFileIsOneLineAndWritesNothing) {
   test::TempDir dir;
-  std::ofstream(dir / "nocamera.gltf") << R"({"asset": {"version": "2.0"}, "nodes": [{"name": "empty"}], "scenes": [{"nodes": [0]}]})";
-  const auto r = run_command(kFacet + " render " + (dir / "nocamera.gltf").string() + " -o " + (dir / "x.exr").string());
+  std::ofstream(dir / "nocamera.gltf")
+      << R"({"asset": {"version": "2.0"}, "nodes": [{"name": "empty"}], "scenes": [{"nodes": [0]}]})";
+  const auto r =
+      run_command(kFacet + " render " + (dir / "nocamera.gltf").string() + " -o " + (dir / "x.exr").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_EQ(r.err, "facet: error: " + (dir / "nocamera.gltf").string() +
                        ": has no camera in its scene; facet renders a scene through its perspective camera\n");

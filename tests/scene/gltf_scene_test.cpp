@@ -56,11 +56,14 @@ GltfTestWriter scene_writer() {
   const std::vector<uint16_t> indices{0, 2, 1, 0, 3, 2};
   const Json attributes = {{"POSITION", w.add_accessor(positions, kFloat, "VEC3", 4)}};
   const int index_accessor = w.add_accessor(indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, "SCALAR", 6);
-  w.doc()["meshes"] = Json::array(
-      {{{"name", "quad"}, {"primitives", {{{"attributes", attributes}, {"indices", index_accessor}, {"material", 0}}}}}});
-  w.doc()["materials"] = Json::array({{{"name", "Clay"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.7, 0.35, 0.25, 1.0}}}}}});
+  w.doc()["meshes"] =
+      Json::array({{{"name", "quad"},
+                    {"primitives", {{{"attributes", attributes}, {"indices", index_accessor}, {"material", 0}}}}}});
+  w.doc()["materials"] =
+      Json::array({{{"name", "Clay"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.7, 0.35, 0.25, 1.0}}}}}});
   w.doc()["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}});
-  w.doc()["nodes"] = Json::array({{{"name", "floor"}, {"mesh", 0}}, {{"name", "eye"}, {"camera", 0}, {"translation", {0, 1, 4}}}});
+  w.doc()["nodes"] =
+      Json::array({{{"name", "floor"}, {"mesh", 0}}, {{"name", "eye"}, {"camera", 0}, {"translation", {0, 1, 4}}}});
   w.doc()["scenes"] = Json::array({{{"nodes", {0, 1}}}});
   w.doc()["scene"] = 0;
   return w;
@@ -86,8 +89,8 @@ std::string load_error(GltfTestWriter& w, const std::string& test) {
 }
 
 void expect_near(glm::dvec3 a, glm::dvec3 b, double tolerance, const std::string& what) {
-  EXPECT_LT(glm::length(a - b), tolerance) << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x
-                                           << ", " << b.y << ", " << b.z << ")";
+  EXPECT_LT(glm::length(a - b), tolerance)
+      << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y << ", " << b.z << ")";
 }
 
 // The camera's placement as built by hand from `world`: glTF cameras look down -z with +y up.
@@ -107,8 +110,11 @@ TEST(GltfScene, CameraWorldTransformIsParentTimesChild) {
   GltfTestWriter trs = scene_writer();
   trs.doc()["nodes"][1]["translation"] = {0, 0.5, 5};
   trs.doc()["nodes"][1]["rotation"] = quaternion(child_axis, child_angle);
-  trs.doc()["nodes"].push_back({{"name", "rig"}, {"children", {1}}, {"translation", {1, 2, 3}},
-                                {"rotation", quaternion(parent_axis, parent_angle)}, {"scale", {2, 2, 2}}});
+  trs.doc()["nodes"].push_back({{"name", "rig"},
+                                {"children", {1}},
+                                {"translation", {1, 2, 3}},
+                                {"rotation", quaternion(parent_axis, parent_angle)},
+                                {"scale", {2, 2, 2}}});
   trs.doc()["scenes"][0]["nodes"] = {0, 2};
   const Scene scene = load(trs, "hierarchy_trs");
   expect_camera(scene.camera, parent * child);
@@ -127,15 +133,17 @@ TEST(GltfScene, CameraWorldTransformIsParentTimesChild) {
 
 TEST(GltfScene, FirstPerspectiveCameraByNodeIndexAndItsAspect) {
   GltfTestWriter w = scene_writer();
-  w.doc()["cameras"].push_back({{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"zfar", 9}, {"znear", 0.1}}}});
-  w.doc()["cameras"].push_back({{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"aspectRatio", 2.0}, {"znear", 0.1}}}});
+  w.doc()["cameras"].push_back(
+      {{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"zfar", 9}, {"znear", 0.1}}}});
+  w.doc()["cameras"].push_back(
+      {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"aspectRatio", 2.0}, {"znear", 0.1}}}});
   // Node 0 (the floor's) gets the orthographic camera, node 2 the second perspective one.
   w.doc()["nodes"][0]["camera"] = 1;
   w.doc()["nodes"].push_back({{"camera", 2}, {"translation", {0, 0, 9}}});
   w.doc()["scenes"][0]["nodes"] = {0, 1, 2};
   const Scene scene = load(w, "first_camera");
   EXPECT_EQ(scene.camera.position, glm::dvec3(0, 1, 4));  // node 1: the lowest-index perspective camera
-  EXPECT_EQ(scene.camera.width, 640);                       // no aspectRatio: facet's defaults
+  EXPECT_EQ(scene.camera.width, 640);                     // no aspectRatio: facet's defaults
   EXPECT_EQ(scene.camera.height, 360);
 
   w.doc()["nodes"][1]["camera"] = 2;  // aspectRatio 2 at the default height 360
@@ -161,22 +169,25 @@ TEST(GltfScene, DirectionalLightPointsAlongTheNodesPlusZ) {
   w.doc()["extensionsRequired"] = {"KHR_lights_punctual"};  // understood, so allowed
   w.doc()["extensions"]["KHR_lights_punctual"]["lights"] = {
       {{"type", "directional"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 4.0}}};
-  w.doc()["nodes"].push_back({{"rotation", quaternion(axis, angle)}, {"translation", {5, 5, 5}},
+  w.doc()["nodes"].push_back({{"rotation", quaternion(axis, angle)},
+                              {"translation", {5, 5, 5}},
                               {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
   w.doc()["nodes"].push_back({{"children", {2}}, {"rotation", quaternion(parent_axis, parent_angle)}});
   w.doc()["scenes"][0]["nodes"] = {0, 1, 3};
   const Scene scene = load(w, "light");
   // Light travels down the node's -z, so the direction toward it is the node's +z in world space.
-  const glm::dvec3 expected = glm::dvec3(rotation(parent_axis, parent_angle) * rotation(axis, angle) * glm::dvec4(0, 0, 1, 0));
+  const glm::dvec3 expected =
+      glm::dvec3(rotation(parent_axis, parent_angle) * rotation(axis, angle) * glm::dvec4(0, 0, 1, 0));
   expect_near(scene.light.direction, expected, 1e-12, "direction");
   EXPECT_EQ(scene.light.irradiance, glm::dvec3(4.0, 2.0, 1.0));
 }
 
 TEST(GltfScene, MaterialsFromExtrasEqualTheJsonScenesAndBaseColourIsTheFallback) {
   const Json gold = {{"type", "microflake"}, {"ndf", "ggx"}, {"param", 0.25}, {"albedo", {1.0, 0.77, 0.34}}};
-  const Json ground = {{"type", "colormap_texture"},
-                       {"texture", {{"noise", {{"width", 8}, {"height", 8}, {"octaves", 2}, {"base_frequency", 2}, {"seed", 3}}}}},
-                       {"colormap", "viridis"}};
+  const Json ground = {
+      {"type", "colormap_texture"},
+      {"texture", {{"noise", {{"width", 8}, {"height", 8}, {"octaves", 2}, {"base_frequency", 2}, {"seed", 3}}}}},
+      {"colormap", "viridis"}};
   GltfTestWriter w = scene_writer();
   w.doc()["materials"].push_back({{"name", "Gold"}, {"extras", {{"facet", gold}}}});
   w.doc()["materials"].push_back({{"name", "Ground"}, {"extras", {{"facet", ground}, {"author", "someone"}}}});
@@ -191,7 +202,7 @@ TEST(GltfScene, MaterialsFromExtrasEqualTheJsonScenesAndBaseColourIsTheFallback)
                                                {"Gold", gold},
                                                {"Ground", ground},
                                                {"default", {{"type", "lambert"}, {"albedo", {1, 1, 1}}}}}}})
-                                             .dump();
+                                           .dump();
   const Scene json = load_scene(dir / "scene.json");
   ASSERT_EQ(scene.material_names, json.material_names);
   const auto& clay = std::get<LambertMaterial>(scene.materials[0]);
@@ -219,10 +230,12 @@ GltfTestWriter animated_writer(const std::string& interpolation = "LINEAR", bool
   const int times = w.add_accessor(std::vector<float>{0, 1}, kFloat, "SCALAR", 2);
   const int moves = w.add_accessor(std::vector<float>{0, 0, 5, 2, 0, 5}, kFloat, "VEC3", 2);
   const int rotations = w.add_accessor(std::vector<float>{0, 0, 0, 1, 0, h, 0, h}, kFloat, "VEC4", 2);
-  w.doc()["animations"] = {{{"samplers", {{{"input", times}, {"output", moves}, {"interpolation", interpolation}},
-                                          {{"input", times}, {"output", rotations}, {"interpolation", interpolation}}}},
-                            {"channels", {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}},
-                                          {{"sampler", 1}, {"target", {{"node", 1}, {"path", "rotation"}}}}}}}};
+  w.doc()["animations"] = {{{"samplers",
+                             {{{"input", times}, {"output", moves}, {"interpolation", interpolation}},
+                              {{"input", times}, {"output", rotations}, {"interpolation", interpolation}}}},
+                            {"channels",
+                             {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}},
+                              {{"sampler", 1}, {"target", {{"node", 1}, {"path", "rotation"}}}}}}}};
   w.doc()["nodes"].push_back({{"children", {1}}, {"translation", {0, 1, 0}}});
   w.doc()["scenes"][0]["nodes"] = {0, 2};
   return w;
@@ -261,8 +274,10 @@ TEST(GltfScene, CameraAnimationBecomesAPathSampledAtAndBetweenKeys) {
 }
 
 TEST(GltfScene, TrackSamplingIsLerpAndShortArcSlerp) {
-  GltfTrack move{GltfTrack::Interpolation::Linear, {0.0, 2.0, 3.0}, {glm::dvec4(0, 0, 0, 0), glm::dvec4(4, 2, 0, 0), glm::dvec4(4, 2, 1, 0)}};
-  EXPECT_EQ(sample_gltf_track(move, false, -1.0), glm::dvec4(0.0));     // before the first key
+  GltfTrack move{GltfTrack::Interpolation::Linear,
+                 {0.0, 2.0, 3.0},
+                 {glm::dvec4(0, 0, 0, 0), glm::dvec4(4, 2, 0, 0), glm::dvec4(4, 2, 1, 0)}};
+  EXPECT_EQ(sample_gltf_track(move, false, -1.0), glm::dvec4(0.0));  // before the first key
   EXPECT_EQ(sample_gltf_track(move, false, 0.5), glm::dvec4(1, 0.5, 0, 0));
   EXPECT_EQ(sample_gltf_track(move, false, 2.0), glm::dvec4(4, 2, 0, 0));
   EXPECT_EQ(sample_gltf_track(move, false, 2.25), glm::dvec4(4, 2, 0.25, 0));
@@ -270,7 +285,8 @@ TEST(GltfScene, TrackSamplingIsLerpAndShortArcSlerp) {
   // From no rotation to 120° about x, the second key stored negated (w < 0): interpolated as written,
   // that is the 240° arc the other way round; the shorter arc at s = 1/4 is 30° about x.
   const double half = kPi / 3;  // half of 120°
-  GltfTrack turn{GltfTrack::Interpolation::Linear, {0.0, 1.0},
+  GltfTrack turn{GltfTrack::Interpolation::Linear,
+                 {0.0, 1.0},
                  {glm::dvec4(0, 0, 0, 1), -glm::dvec4(std::sin(half), 0, 0, std::cos(half))}};
   const glm::dvec4 q = sample_gltf_track(turn, true, 0.25);
   const glm::dvec4 expected(std::sin(kPi / 12), 0, 0, std::cos(kPi / 12));  // 30°: half-angle 15°
@@ -286,7 +302,8 @@ TEST(GltfScene, RefusedInputsAreOneLineErrors) {
     GltfTestWriter w = scene_writer();
     w.doc()["nodes"][1].erase("camera");
     expect_error(w, "no_camera", "has no camera");
-    w.doc()["cameras"][0] = {{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"zfar", 9}, {"znear", 0.1}}}};
+    w.doc()["cameras"][0] = {{"type", "orthographic"},
+                             {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"zfar", 9}, {"znear", 0.1}}}};
     w.doc()["nodes"][1]["camera"] = 0;
     expect_error(w, "orthographic", "only orthographic cameras");
   }
@@ -322,6 +339,11 @@ TEST(GltfScene, RefusedInputsAreOneLineErrors) {
     expect_error(w, "microsurface_mesh", "material \"Clay\" is a microsurface, which only finite planes can have");
   }
   expect_error(animated_writer("CUBICSPLINE"), "cubicspline", "interpolation CUBICSPLINE is not supported");
+  {
+    GltfTestWriter w = animated_writer();  // 1 s at 100 000 fps: more frames than a path may have
+    w.doc()["extras"] = {{"facet", {{"fps", 1e5}}}};
+    expect_error(w, "too_many_frames", "camera node 1: its animation lasts more than 10000 frames");
+  }
   {
     GltfTestWriter w = animated_writer();  // the parent moves too: refused, not ignored
     w.doc()["animations"][0]["channels"][0]["target"]["node"] = 2;
