@@ -180,8 +180,10 @@ void add_light(const tinygltf::Model& model, const Hierarchy& h, Json& doc) {
     const glm::dvec3 toward = glm::dvec3((*h.world[i])[2]);
     if (!(glm::length(toward) > 0.0) || !std::isfinite(glm::length(toward)))
       throw Error(where + ": its world transform is singular or not finite");
+    if (!light.color.empty() && light.color.size() != 3)
+      throw Error("light " + std::to_string(index) + ": color needs 3 numbers");
     const glm::dvec3 colour =
-        light.color.size() == 3 ? glm::dvec3(light.color[0], light.color[1], light.color[2]) : glm::dvec3(1.0);
+        light.color.empty() ? glm::dvec3(1.0) : glm::dvec3(light.color[0], light.color[1], light.color[2]);
     doc["light"] = {{"direction", json_vec3(glm::normalize(toward))},
                     {"irradiance", json_vec3(colour * light.intensity)}};
   }
@@ -194,7 +196,7 @@ std::vector<std::string> material_keys(const tinygltf::Model& model) {
   for (size_t i = 0; i <= model.materials.size(); ++i) {
     const std::string name = i == model.materials.size() ? "default" : model.materials[i].name;
     std::string key = name.empty() ? "material " + std::to_string(i) : name;
-    if (taken.count(key)) key += " (" + std::to_string(i) + ")";
+    while (taken.count(key)) key += " (" + std::to_string(i) + ")";
     taken.insert(key);
     keys.push_back(key);
   }
@@ -212,6 +214,7 @@ void add_materials(const tinygltf::Model& model, const std::vector<std::string>&
       doc["materials"][keys[i]] = e["facet"];
     } else {
       const std::vector<double>& c = m.pbrMetallicRoughness.baseColorFactor;
+      if (c.size() != 4) throw Error("material " + std::to_string(i) + ": baseColorFactor needs 4 numbers");
       doc["materials"][keys[i]] = {{"type", "lambert"}, {"albedo", {c[0], c[1], c[2]}}};
     }
   }

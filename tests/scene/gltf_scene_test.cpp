@@ -222,6 +222,15 @@ TEST(GltfScene, MaterialsFromExtrasEqualTheJsonScenesAndBaseColourIsTheFallback)
   EXPECT_EQ(scene.material_names[scene.meshes[1].material], "default");
 }
 
+TEST(GltfScene, MaterialNamesAreMadeUnique) {
+  GltfTestWriter w = scene_writer();
+  w.doc()["materials"].push_back({{"name", "Clay"}});
+  w.doc()["materials"].push_back({{"name", "Clay (1)"}});
+  w.doc()["materials"].push_back(Json::object());
+  const Scene scene = load(w, "material_names");
+  EXPECT_EQ(scene.material_names, (std::vector<std::string>{"Clay", "Clay (1)", "Clay (1) (2)", "material 3"}));
+}
+
 // A camera (node 1, under a parent moved up by 1) animated over 1 s: translation from (0,0,5) to
 // (2,0,5) and rotation from none to 90° about +y, keys at 0 and 1 s.
 GltfTestWriter animated_writer(const std::string& interpolation = "LINEAR", bool negate_last = false) {
