@@ -129,6 +129,11 @@ TEST(GltfScene, CameraWorldTransformIsParentTimesChild) {
   rig.erase("scale");
   for (int i = 0; i < 16; ++i) rig["matrix"].push_back(parent[i / 4][i % 4]);
   expect_camera(load(matrix, "hierarchy_matrix").camera, parent * child);
+
+  // A .glb is read as the same scene.
+  const auto glb = test::scratch_dir("gltf_scene_hierarchy_glb") / "scene.glb";
+  trs.write_glb(glb);
+  expect_camera(load_scene(glb).camera, parent * child);
 }
 
 TEST(GltfScene, FirstPerspectiveCameraByNodeIndexAndItsAspect) {
