@@ -74,7 +74,7 @@ void add_bench_command(CLI::App& app, Action& action) {
   auto* command = app.add_subcommand("bench", "Speed-vs-error report: every method against the CPU reference");
   auto options = std::make_shared<BenchCommandOptions>();
   auto& bench = options->bench;
-  command->add_option("scenes", bench.scenes, "Scene files (JSON)")->required()->check(CLI::ExistingFile);
+  command->add_option("scenes", bench.scenes, "Scene files (JSON or glTF 2.0)")->required()->check(CLI::ExistingFile);
   command->add_option("--out", bench.out_dir, "Output folder (results.json, report.md, index.html, images)")
       ->required();
   command->add_flag("--quick", bench.quick, "Small version: 160 px wide, reference grid 8, ss:K up to 8, 2 repeats");

@@ -59,7 +59,7 @@ int run_reference(const ReferenceCommandOptions& options) {
 void add_reference_command(CLI::App& app, Action& action) {
   auto* command = app.add_subcommand("reference", "Render the CPU reference image of a scene to an OpenEXR file");
   auto options = std::make_shared<ReferenceCommandOptions>();
-  command->add_option("scene", options->scene, "Scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("scene", options->scene, "Scene file (JSON, or glTF 2.0 .gltf/.glb; see scenes/README.md)")->required();
   command->add_option("--grid", options->reference.grid, "N: an N x N jittered grid of primary rays per pixel")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();

@@ -105,7 +105,7 @@ int run_render(const RenderOptions& options) {
 void add_render_command(CLI::App& app, Action& action) {
   auto* command = app.add_subcommand("render", "Render a scene on the Vulkan device to an OpenEXR file");
   auto options = std::make_shared<RenderOptions>();
-  command->add_option("scene", options->scene, "Scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("scene", options->scene, "Scene file (JSON, or glTF 2.0 .gltf/.glb; see scenes/README.md)")->required();
   add_device_options(*command, options->device);
   command
       ->add_option("--method", options->method,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include "common/error.hpp"
 #include "scene/gltf_accessor.hpp"
+#include "scene/gltf_model.hpp"
 #include "scene/mesh_check.hpp"
 #include "scene/transform.hpp"
 
@@ -79,7 +81,9 @@ std::string_view glb_json_chunk(const std::string& bytes) {
   return std::string_view(bytes).substr(20, length);
 }
 
-tinygltf::Model load_model(const std::filesystem::path& file) {
+}  // namespace
+
+tinygltf::Model load_gltf_model(const std::filesystem::path& file, const std::set<std::string>& understood_extensions) {
   const std::string extension = file.extension().string();
   if (extension != ".gltf" && extension != ".glb") throw Error("mesh files must end in .gltf or .glb");
   std::ifstream in(file, std::ios::binary);
@@ -94,6 +98,7 @@ tinygltf::Model load_model(const std::filesystem::path& file) {
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(ignore_image, nullptr);
+  loader.SetStoreOriginalJSONForExtrasAndExtensions(true);  // extras as JSON text (gltf_scene.cpp)
   tinygltf::Model model;
   std::string err, warn;
   const std::string base_dir = file.parent_path().string();  // for external buffers
@@ -103,15 +108,14 @@ tinygltf::Model load_model(const std::filesystem::path& file) {
                             &model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, base_dir)
                       : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, base_dir);
   if (!ok) throw Error("invalid glTF: " + one_line(err.empty() ? std::string("unknown error") : err));
-  if (!model.extensionsRequired.empty()) {
-    std::string names;
-    for (const std::string& n : model.extensionsRequired) names += (names.empty() ? "" : ", ") + n;
-    throw Error("requires unsupported glTF extensions: " + names);
-  }
+  std::string names;
+  for (const std::string& n : model.extensionsRequired)
+    if (!understood_extensions.count(n)) names += (names.empty() ? "" : ", ") + n;
+  if (!names.empty()) throw Error("requires unsupported glTF extensions: " + names);
   return model;
 }
 
-glm::dmat4 local_transform(const tinygltf::Node& node, size_t index) {
+glm::dmat4 gltf_local_transform(const tinygltf::Node& node, size_t index) {
   if (!node.matrix.empty()) {
     if (node.matrix.size() != 16) throw Error("node " + std::to_string(index) + ": matrix needs 16 numbers");
     glm::dmat4 m;
@@ -135,6 +139,8 @@ glm::dmat4 local_transform(const tinygltf::Node& node, size_t index) {
   }
   return m;
 }
+
+namespace {
 
 // Attribute `key` as vectors of N finite components, one per vertex (`vertex_count`, unless
 // this is POSITION, which defines it); empty if the primitive does not have it.
@@ -215,68 +221,90 @@ Mesh read_primitive(const tinygltf::Model& model, const tinygltf::Primitive& pri
 
 }  // namespace
 
-std::vector<Mesh> load_gltf_meshes(const std::filesystem::path& file, const glm::dmat4& object_to_world,
-                                   uint32_t material) {
+void for_each_gltf_node(const tinygltf::Model& model, const glm::dmat4& root_to_world,
+                        const std::function<void(size_t, const glm::dmat4&)>& visit) {
+  std::vector<std::pair<int, glm::dmat4>> stack;  // (node, parent-to-world); explicit, cycles are checked
+  if (!model.scenes.empty()) {
+    const size_t scene = model.defaultScene >= 0 ? static_cast<size_t>(model.defaultScene) : 0;
+    if (scene >= model.scenes.size()) throw Error("default scene " + std::to_string(scene) + " does not exist");
+    for (int root : model.scenes[scene].nodes) stack.emplace_back(root, root_to_world);
+  } else {
+    std::vector<bool> is_child(model.nodes.size(), false);
+    for (const tinygltf::Node& node : model.nodes) {
+      for (int c : node.children) {
+        if (c >= 0 && static_cast<size_t>(c) < is_child.size()) is_child[static_cast<size_t>(c)] = true;
+      }
+    }
+    for (size_t i = 0; i < model.nodes.size(); ++i) {
+      if (!is_child[i]) stack.emplace_back(static_cast<int>(i), root_to_world);
+    }
+  }
+
+  std::vector<bool> visited(model.nodes.size(), false);
+  while (!stack.empty()) {
+    const auto [index, parent] = stack.back();
+    stack.pop_back();
+    if (index < 0 || static_cast<size_t>(index) >= model.nodes.size()) {
+      throw Error("node " + std::to_string(index) + " does not exist");
+    }
+    const size_t node_index = static_cast<size_t>(index);
+    // glTF 2.0 §3.5.3: the hierarchy is a set of disjoint trees.
+    if (visited[node_index]) throw Error("node " + std::to_string(index) + " is reached twice (cycle or shared child)");
+    visited[node_index] = true;
+    const tinygltf::Node& node = model.nodes[node_index];
+    const glm::dmat4 world = parent * gltf_local_transform(node, node_index);
+    for (int child : node.children) stack.emplace_back(child, world);
+    visit(node_index, world);
+  }
+}
+
+std::vector<Mesh> read_gltf_node_meshes(const tinygltf::Model& model, size_t node_index, const glm::dmat4& world,
+                                        const std::function<uint32_t(int)>& material_of) {
+  const tinygltf::Node& node = model.nodes[node_index];
+  std::vector<Mesh> meshes;
+  if (node.mesh < 0) return meshes;
+  if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {
+    throw Error("node " + std::to_string(node_index) + " references missing mesh " + std::to_string(node.mesh));
+  }
+  const tinygltf::Mesh& gltf_mesh = model.meshes[static_cast<size_t>(node.mesh)];
+  for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
+    const std::string name = (gltf_mesh.name.empty() ? "mesh " + std::to_string(node.mesh) : gltf_mesh.name) +
+                             " primitive " + std::to_string(p);
+    Mesh mesh = read_primitive(model, gltf_mesh.primitives[p], name);
+    try {
+      transform_mesh(mesh, world);
+    } catch (const Error& e) {
+      throw Error("node " + std::to_string(node_index) + ": " + e.what());
+    }
+    check_mesh(mesh);  // e.g. a transform that overflows the float range
+    mesh.material = material_of(gltf_mesh.primitives[p].material);
+    meshes.push_back(std::move(mesh));
+  }
+  return meshes;
+}
+
+void rethrow_as_gltf_error(const std::filesystem::path& file) {
   try {
-    const tinygltf::Model model = load_model(file);
-
-    std::vector<std::pair<int, glm::dmat4>> stack;  // (node, parent-to-world); explicit, cycles are checked
-    if (!model.scenes.empty()) {
-      const size_t scene = model.defaultScene >= 0 ? static_cast<size_t>(model.defaultScene) : 0;
-      if (scene >= model.scenes.size()) throw Error("default scene " + std::to_string(scene) + " does not exist");
-      for (int root : model.scenes[scene].nodes) stack.emplace_back(root, object_to_world);
-    } else {
-      std::vector<bool> is_child(model.nodes.size(), false);
-      for (const tinygltf::Node& node : model.nodes) {
-        for (int c : node.children) {
-          if (c >= 0 && static_cast<size_t>(c) < is_child.size()) is_child[static_cast<size_t>(c)] = true;
-        }
-      }
-      for (size_t i = 0; i < model.nodes.size(); ++i) {
-        if (!is_child[i]) stack.emplace_back(static_cast<int>(i), object_to_world);
-      }
-    }
-
-    std::vector<Mesh> meshes;
-    std::vector<bool> visited(model.nodes.size(), false);
-    while (!stack.empty()) {
-      const auto [index, parent] = stack.back();
-      stack.pop_back();
-      if (index < 0 || static_cast<size_t>(index) >= model.nodes.size()) {
-        throw Error("node " + std::to_string(index) + " does not exist");
-      }
-      const size_t node_index = static_cast<size_t>(index);
-      // glTF 2.0 §3.5.3: the hierarchy is a set of disjoint trees.
-      if (visited[node_index])
-        throw Error("node " + std::to_string(index) + " is reached twice (cycle or shared child)");
-      visited[node_index] = true;
-      const tinygltf::Node& node = model.nodes[node_index];
-      const glm::dmat4 world = parent * local_transform(node, node_index);
-      for (int child : node.children) stack.emplace_back(child, world);
-      if (node.mesh < 0) continue;
-      if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {
-        throw Error("node " + std::to_string(index) + " references missing mesh " + std::to_string(node.mesh));
-      }
-      const tinygltf::Mesh& gltf_mesh = model.meshes[static_cast<size_t>(node.mesh)];
-      for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
-        const std::string name = (gltf_mesh.name.empty() ? "mesh " + std::to_string(node.mesh) : gltf_mesh.name) +
-                                 " primitive " + std::to_string(p);
-        Mesh mesh = read_primitive(model, gltf_mesh.primitives[p], name);
-        try {
-          transform_mesh(mesh, world);
-        } catch (const Error& e) {
-          throw Error("node " + std::to_string(index) + ": " + e.what());
-        }
-        check_mesh(mesh);  // e.g. a transform that overflows the float range
-        mesh.material = material;
-        meshes.push_back(std::move(mesh));
-      }
-    }
-    return meshes;
+    throw;
   } catch (const Error& e) {
     throw Error(file.string() + ": " + e.what());
   } catch (const std::exception& e) {  // tinygltf or the allocator; keep the one-line contract
     throw Error(file.string() + ": cannot load glTF: " + one_line(e.what()));
+  }
+}
+
+std::vector<Mesh> load_gltf_meshes(const std::filesystem::path& file, const glm::dmat4& object_to_world,
+                                   uint32_t material) {
+  try {
+    const tinygltf::Model model = load_gltf_model(file);
+    std::vector<Mesh> meshes;
+    for_each_gltf_node(model, object_to_world, [&](size_t node, const glm::dmat4& world) {
+      for (Mesh& m : read_gltf_node_meshes(model, node, world, [&](int) { return material; }))
+        meshes.push_back(std::move(m));
+    });
+    return meshes;
+  } catch (const std::exception&) {
+    rethrow_as_gltf_error(file);
   }
 }
 

@@ -14,6 +14,7 @@
 #include "scene/camera_path.hpp"
 #include "scene/diffraction_material_reader.hpp"
 #include "scene/gltf_loader.hpp"
+#include "scene/gltf_scene.hpp"
 #include "scene/plane_frame.hpp"
 #include "scene/subpixel_materials.hpp"
 #include "scene/transform.hpp"
@@ -256,6 +257,8 @@ Scene parse_scene(const Json& document, const std::filesystem::path& source) {
 }
 
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  const std::string extension = file.extension().string();
+  if (extension == ".gltf" || extension == ".glb") return load_gltf_scene(file, overrides);
   std::ifstream in(file, std::ios::binary);
   std::error_code ec;
   if (!in || std::filesystem::is_directory(file, ec)) {

@@ -18,7 +18,8 @@ inline constexpr int kMaxImageSide = 16384;
 inline constexpr int kMaxJsonDepth = 64;
 
 // Reads and parses `file`, applies `overrides` ("camera.width=320", common/json_overrides.hpp) in
-// order, then validates; mesh paths are relative to its directory.
+// order, then validates; mesh paths are relative to its directory. A file ending in .gltf or .glb is
+// read as a glTF 2.0 scene (gltf_scene.hpp).
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 
 // Validates an already parsed document; `source` names it in messages and anchors
