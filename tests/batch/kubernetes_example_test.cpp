@@ -12,7 +12,7 @@
 #include "support/temp_dir.hpp"
 
 namespace facet {
-namespace {
+namespace kubernetes_example_test {
 
 namespace fs = std::filesystem;
 
@@ -47,5 +47,5 @@ TEST(KubernetesExample, EachIndexRendersItsShardOfTheCompletions) {
   }
 }
 
-}  // namespace
+}  // namespace kubernetes_example_test
 }  // namespace facet

@@ -13,7 +13,7 @@
 #include "support/temp_dir.hpp"
 
 namespace facet {
-namespace {
+namespace install_test {
 
 namespace fs = std::filesystem;
 
@@ -86,5 +86,5 @@ TEST(Install, TheContainerRuntimeStageHasEveryLibraryFacetLoads) {
   EXPECT_NE(runtime.find("mesa-vulkan-drivers"), std::string::npos) << "lavapipe";
 }
 
-}  // namespace
+}  // namespace install_test
 }  // namespace facet

@@ -18,7 +18,7 @@
 #include "support/temp_dir.hpp"
 
 namespace facet {
-namespace {
+namespace gltf_scene_cli_test {
 
 namespace fs = std::filesystem;
 using test::run_command;
@@ -136,5 +136,5 @@ TEST(GltfSceneCli, ARefusedFileIsOneLineAndWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "x.exr"));
 }
 
-}  // namespace
+}  // namespace gltf_scene_cli_test
 }  // namespace facet

@@ -17,7 +17,7 @@
 #include "scene/scene_loader.hpp"
 
 namespace facet {
-namespace {
+namespace gltf_scene_test {
 
 using test::GltfTestWriter;
 using Json = nlohmann::json;
@@ -395,5 +395,5 @@ TEST(GltfScene, RefusedInputsAreOneLineErrors) {
   }
 }
 
-}  // namespace
+}  // namespace gltf_scene_test
 }  // namespace facet
