@@ -325,7 +325,7 @@ TEST(GltfScene, RefusedInputsAreOneLineErrors) {
     GltfTestWriter w = scene_writer();
     Json light = {{"type", type}};
     if (type == "spot") light["spot"] = Json::object();
-    w.doc()["extensions"]["KHR_lights_punctual"]["lights"] = {light};
+    w.doc()["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({light});
     w.doc()["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 0;
     expect_error(w, type + "_light", "a " + type + " light; facet renders one directional light");
   }
