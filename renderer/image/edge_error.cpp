@@ -26,7 +26,7 @@ float mean_abs_difference(glm::vec3 a, glm::vec3 b) {
 
 void add_edge_error(const Image& image, std::vector<AovPixel>& pixels, int samples_per_axis) {
   std::vector<float> edge(pixels.size(), 0.0f);
-  const float scale = 0.5f / static_cast<float>(samples_per_axis);  // eq. 3
+  const float scale = 0.25f / static_cast<float>(samples_per_axis);  // eq. 3
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const std::size_t p = image.index(x, y);

@@ -1,6 +1,7 @@
 // The edge term of `filtered`'s per-pixel error estimate (docs/error_estimate.md, eq. 3): a pixel whose
 // neighbour lies across a geometric edge (coverage or normal jumps) sees one side of the edge
-// where the truth mixes both, so it is off by about half the colour step, less with K x K strata.
+// where the truth mixes both, so it is off by a fraction of the colour step (a quarter, measured), less
+// with K x K strata.
 #pragma once
 
 #include <vector>
