@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,8 @@
 #include "common/error.hpp"
 #include "image/compare_sheet.hpp"
 #include "image/crop.hpp"
+#include "image/error_estimate_quality.hpp"
+#include "image/exr_io.hpp"
 #include "image/flip.hpp"
 #include "image/heatmap.hpp"
 #include "image/image_comparison.hpp"
@@ -60,6 +63,30 @@ void write_heatmap(const CompareOptions& options, const Image& test, const Image
   result["heatmap_max"] = max_value;
 }
 
+// A frame with an `error` channel (`--aov error`): how its estimate ranks and sizes the true per-pixel
+// error (the mean absolute error over R, G, B) over the pixels its A channel marks as covered (all
+// pixels without A); docs/error_estimate.md.
+void add_error_estimate_quality(const std::filesystem::path& path, const Image& test, const Image& reference,
+                                nlohmann::json& result) {
+  if (path.extension() != ".exr" || !exr_has_channel(path, "error")) return;
+  const ScalarImage estimate = read_exr_scalar(path, "error"), truth = absolute_error_map(test, reference);
+  const ScalarImage coverage =
+      exr_has_channel(path, "A") ? read_exr_scalar(path, "A") : ScalarImage(test.width, test.height, 1.0f);
+  std::vector<float> covered_estimate, covered_truth;
+  for (std::size_t i = 0; i < estimate.values.size(); ++i)
+    if (coverage.values[i] > 0.0f) {
+      covered_estimate.push_back(estimate.values[i]);
+      covered_truth.push_back(truth.values[i]);
+    }
+  if (covered_estimate.size() < 2) return;
+  const ErrorEstimateQuality quality = judge_error_estimate(covered_estimate, covered_truth);
+  result["error_spearman"] = quality.spearman;
+  result["error_mean_ratio"] = quality.mean_ratio;
+  nlohmann::json bins = nlohmann::json::array();
+  for (const CalibrationBin& bin : quality.calibration) bins.push_back({bin.estimate, bin.truth});
+  result["error_calibration"] = bins;
+}
+
 void print_result(const nlohmann::json& result, bool json) {
   if (json) {
     std::cout << result.dump() << "\n";
@@ -74,6 +101,9 @@ void print_result(const nlohmann::json& result, bool json) {
             << "max_abs  " << text("max_abs", "") << "\n"
             << "ssim     " << text("ssim", "undefined (smaller than 11x11)") << "\n"
             << "flip     " << text("flip", "") << "\n";
+  if (result.contains("error_spearman"))
+    std::cout << "error estimate: spearman " << result["error_spearman"].dump() << ", mean ratio "
+              << result["error_mean_ratio"].dump() << "\n";
 }
 
 int run_compare(const CompareOptions& options) {
@@ -101,6 +131,7 @@ int run_compare(const CompareOptions& options) {
     result["width"] = tests[i].image.width;
     result["height"] = tests[i].image.height;
     if (!options.heatmap.empty()) write_heatmap(options, tests[i].image, reference.image, result);
+    if (options.crop.empty()) add_error_estimate_quality(options.images[i], tests[i].image, reference.image, result);
     const std::string failed = failed_thresholds(comparisons[i], thresholds);
     if (!failed.empty()) {
       std::cerr << "facet: compare: failed: " << (sheet ? options.images[i].string() + ": " : "") << failed << "\n";

@@ -24,6 +24,7 @@ struct ReferenceCommandOptions {
   FrameOption frame;
   frames::FrameFile output;
   frames::ReferenceMethod reference;
+  std::string aov;  // --aov
 };
 
 int run_reference(const ReferenceCommandOptions& options) {
@@ -31,8 +32,10 @@ int run_reference(const ReferenceCommandOptions& options) {
   Scene scene = load_scene(options.scene, options.overrides);
   options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
+  frames::ReferenceMethod method = options.reference;
+  method.aovs = parse_aovs(options.aov);  // error is refused by the reference renderer
 
-  frames::PreparedFrames prepared(scene, options.reference, nullptr);
+  frames::PreparedFrames prepared(scene, method, nullptr);
   std::unique_ptr<ProgressBar> progress;
   frames::FrameRequest request;
   request.frame = options.frame.frame;
@@ -69,6 +72,9 @@ void add_reference_command(CLI::App& app, Action& action) {
   command->add_option("--threads", options->reference.threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  command->add_option("--aov", options->aov,
+                      "Auxiliary channels to write, a comma list of depth (Z), normal (N.X N.Y N.Z), uv (U V); "
+                      "docs/aov.md");
   add_set_option(*command, options->overrides, "the scene");
   add_resolution_options(*command, options->resolution);
   add_frame_option(*command, options->frame);

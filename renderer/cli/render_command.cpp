@@ -34,6 +34,7 @@ struct RenderOptions {
   int wavelengths = 0;      // 0: the materials' own counts
   int taylor = 0;
   bool timings = false;  // --timings: print the phases
+  std::string aov;       // --aov: comma list of auxiliary channels
 };
 
 // --diffraction, --wavelengths and --taylor on top of --method (they win over a diffraction:M method).
@@ -46,6 +47,9 @@ gpu::RenderMethod render_method(const RenderOptions& options) {
   }
   method.diffraction.wavelengths = options.wavelengths;
   method.diffraction.taylor = options.taylor;
+  method.aovs = parse_aovs(options.aov);
+  if (method.aovs.error && method.texture != gpu::RenderMethod::Texture::Filtered)
+    throw Error("--aov error: only --method filtered (or filtered:ss:K) estimates its error, not " + method.name());
   return method;
 }
 
@@ -121,6 +125,9 @@ void add_render_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(2, 4096));
   command->add_option("--taylor", options->taylor, "Taylor terms of the diffraction BRDF (default: from the tolerance)")
       ->check(CLI::Range(1, 64));
+  command->add_option("--aov", options->aov,
+                      "Auxiliary channels to write, a comma list of depth (Z), normal (N.X N.Y N.Z), uv (U V), "
+                      "error (--method filtered's per-pixel error estimate); docs/aov.md");
   command->add_flag("--timings", options->timings,
                     "Print the wall time of each phase (load, device, upload, diffraction, pipeline, jit, render, "
                     "write); they are also in the EXR metadata as facet:phase:<name>_ms");

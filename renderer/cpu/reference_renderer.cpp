@@ -1,5 +1,6 @@
 #include "cpu/reference_renderer.hpp"
 
+#include <limits>
 #include <mutex>
 #include <string>
 
@@ -43,11 +44,12 @@ class PixelIntegrator {
         resolution_(options.width, options.height) {}
 
   // The box-filtered mean over the N×N grid of pixel (x, y): radiance in rgb, coverage (the fraction of
-  // the rays that hit geometry) in a.
-  glm::dvec4 pixel(int x, int y) const {
+  // the rays that hit geometry) in a; and, where options.aovs asks, the auxiliary outputs into `aov`.
+  glm::dvec4 pixel(int x, int y, AovPixel& aov) const {
     const int n = options_.grid;
     const auto index = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(options_.width) + x;
     glm::dvec4 sum(0.0);
+    AovSums aov_sums;
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < n; ++i) {
         const glm::dvec2 offset = options_.jitter
@@ -56,9 +58,10 @@ class PixelIntegrator {
         const glm::dvec2 film(x + (i + offset.x) / n, y + (j + offset.y) / n);
         const auto sample = static_cast<std::uint64_t>(j) * n + i;
         sum += radiance(k::camera_ray_direction(camera_.forward, camera_.right, camera_.up, film, resolution_),
-                        wavelength_sample(index, sample));
+                        wavelength_sample(index, sample), options_.aovs.any() ? &aov_sums : nullptr);
       }
     }
+    if (options_.aovs.any()) aov = aov_sums.mean();
     return sum / (static_cast<double>(n) * n);
   }
 
@@ -73,10 +76,34 @@ class PixelIntegrator {
     return (static_cast<double>(stratum) + jitter) / static_cast<double>(strata);
   }
 
-  // Radiance along d (rgb), and 1 if it hit geometry, else 0 (a).
-  glm::dvec4 radiance(glm::dvec3 d, double wavelength_u) const {
+  // Depth, normal and uv summed over a pixel's rays that hit geometry (docs/aov.md): their means are
+  // the pixel's, the normal renormalised, as the GPU pass reports them.
+  struct AovSums {
+    int hits = 0;
+    double depth = 0.0;
+    glm::dvec3 normal{0.0};
+    glm::dvec2 uv{0.0};
+    AovPixel mean() const {
+      AovPixel p;
+      p.depth = hits > 0 ? static_cast<float>(depth / hits) : std::numeric_limits<float>::infinity();
+      if (hits > 0 && glm::dot(normal, normal) > 0.0) p.normal = glm::vec3(glm::normalize(normal));
+      if (hits > 0) p.uv = glm::vec2(uv / static_cast<double>(hits));
+      return p;
+    }
+  };
+
+  // Radiance along d (rgb), and 1 if it hit geometry, else 0 (a); the hit's auxiliary values added to
+  // `aov` if given: camera-space z, the normal (toward the ray) and the uv of a macro-surface.
+  glm::dvec4 radiance(glm::dvec3 d, double wavelength_u, AovSums* aov) const {
     const auto hit = world_.intersect(camera_.origin, d);
-    return hit ? glm::dvec4(shade(*hit, d, wavelength_u), 1.0) : glm::dvec4(scene_.background, 0.0);
+    if (!hit) return glm::dvec4(scene_.background, 0.0);
+    if (aov) {
+      ++aov->hits;
+      aov->depth += hit->t * glm::dot(d, camera_.forward);
+      aov->normal += hit->normal;
+      if (!hit->micro) aov->uv += hit->uv;
+    }
+    return glm::dvec4(shade(*hit, d, wavelength_u), 1.0);
   }
 
   // Radiance leaving `hit` along -d.
@@ -132,8 +159,12 @@ Image render_reference(const Scene& scene, const ReferenceOptions& options) {
   const std::int64_t tiles = static_cast<std::int64_t>(tiles_x) * tiles_y;
   const auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed); };
 
+  if (options.aovs.error)
+    throw Error(
+        "--aov error: the reference writes no error estimate (it is the truth the estimate is checked against)");
   Image image(options.width, options.height);
   image.alpha.resize(image.pixel_count());
+  add_aov_channels(image, options.aovs);
   std::mutex progress_mutex;
   std::int64_t done = 0;
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
@@ -145,9 +176,11 @@ Image render_reference(const Scene& scene, const ReferenceOptions& options) {
             const int x0 = static_cast<int>(tile % tiles_x) * ts, y0 = static_cast<int>(tile / tiles_x) * ts;
             for (int y = y0; y < std::min(y0 + ts, options.height) && !cancelled(); ++y)
               for (int x = x0; x < std::min(x0 + ts, options.width); ++x) {
-                const glm::dvec4 pixel = integrator.pixel(x, y);
+                AovPixel aov;
+                const glm::dvec4 pixel = integrator.pixel(x, y, aov);
                 image.set(x, y, glm::vec3(pixel));
                 image.alpha[image.index(x, y)] = static_cast<float>(pixel.a);
+                set_aov_pixel(image, options.aovs, image.index(x, y), aov);
               }
             if (options.progress) {
               const std::lock_guard lock(progress_mutex);

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "image/aov.hpp"
 #include "image/image.hpp"
 #include "scene/scene.hpp"
 
@@ -24,6 +25,7 @@ struct ReferenceOptions {
   bool jitter = true;  // false: the N×N sub-pixel centres (grid 1: the pixel centre)
   int threads = 0;     // 0: all cores
   int tile_size = 16;
+  AovSet aovs{};  // depth, normal, uv written as channels (error is refused: it is a fast method's)
   const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop between tiles
   std::function<void(std::int64_t tiles_done, std::int64_t tiles_total)> progress;  // called serialised
 };

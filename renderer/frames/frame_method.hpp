@@ -15,6 +15,7 @@ struct ReferenceMethod {
   int grid = 32;  // N: N x N jittered rays per pixel
   std::int64_t seed = 1;
   int threads = 0;  // 0: all cores; the image does not depend on it
+  AovSet aovs{};    // depth, normal, uv (`--aov`); the reference has no error estimate
 };
 
 using FrameMethod = std::variant<gpu::RenderMethod, ReferenceMethod>;

@@ -70,6 +70,7 @@ Image PreparedFrames::render_reference(const Camera& camera, int width, int heig
   options.grid = reference.grid;
   options.seed = static_cast<std::uint64_t>(reference.seed);
   options.threads = reference.threads;
+  options.aovs = reference.aovs;
   options.cancel = request.cancel;
   options.progress = request.progress;
   Scene framed = *scene_;  // the reference renders the scene's own camera

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <span>
 #include <string>
 #include <variant>
@@ -11,6 +13,7 @@
 #include "gpu/microsurface_upload.hpp"
 #include "gpu/render_layout.hpp"
 #include "gpu/workgroup_order.hpp"
+#include "image/edge_error.hpp"
 #include "render_direct.spv.h"
 #include "render_direct_fields.spv.h"
 
@@ -71,6 +74,7 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_HAS_TRIANGLES, scene.meshes.empty() ? 0u : 1u},
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICES, diffraction.preintegrated_slices.count},
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS, diffraction.preintegrated_slices.slice_words},
+      {FACET_RENDER_SPEC_AOVS, method.aovs.any() ? 1u : 0u},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};
@@ -82,6 +86,22 @@ std::vector<vk::BufferKind> binding_kinds() {
   std::vector<vk::BufferKind> kinds = SceneBuffers::binding_kinds();
   kinds.resize(FACET_RENDER_BINDING_COUNT, vk::BufferKind::Texels);
   return kinds;
+}
+
+// The vec4s per pixel of the pixel buffer: the colour and coverage, then, with auxiliary outputs, two
+// planes of their sums over the strata (render/direct_pass.glsl).
+uint64_t pixel_vec4s(const AovSet& aovs) { return aovs.any() ? 3 : 1; }
+
+// One pixel's auxiliary outputs from their sums over k^2 strata, `hits` of which hit geometry:
+// depth, normal and uv are means over the hits (the normal renormalised), the error over all strata.
+AovPixel aov_pixel(vec4 depth_normal, vec4 uv_error, float hits, int k) {
+  AovPixel p;
+  p.depth = hits > 0.0f ? depth_normal.x / hits : std::numeric_limits<float>::infinity();
+  const glm::vec3 normal(depth_normal.y, depth_normal.z, depth_normal.w);
+  if (hits > 0.0f && glm::dot(normal, normal) > 0.0f) p.normal = glm::normalize(normal);
+  if (hits > 0.0f) p.uv = glm::vec2(uv_error.x, uv_error.y) / hits;
+  p.error = uv_error.z / static_cast<float>(k * k);
+  return p;
 }
 
 }  // namespace
@@ -97,10 +117,11 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                      ? tile_size
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
       samples_per_axis_(method.samples_per_axis),
+      aovs_(method.aovs),
       buffers_(timed(timings, "upload",
                      [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
       diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
-      pixels_(context, sizeof(vec4) * static_cast<uint64_t>(tile_size) * tile_size),
+      pixels_(context, sizeof(vec4) * pixel_vec4s(method.aovs) * static_cast<uint64_t>(tile_size) * tile_size),
       kernel_(timed(timings, "pipeline", [&] {
         return vk::Kernel(context, {.name = "render_direct",
                                     .spirv = direct_pass_program(scene, method),
@@ -151,24 +172,34 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   const std::vector<const vk::Buffer*> bindings = this->bindings();
   Image image(width, height);
   image.alpha.resize(image.pixel_count());
-  std::vector<vec4> tile_rgba(static_cast<size_t>(tile_size_) * tile_size_);  // a: coverage
+  const int k = samples_per_axis_;
+  const uint64_t planes = pixel_vec4s(aovs_);
+  std::vector<vec4> tile_pixels(planes * tile_size_ * tile_size_);  // rgba (a: coverage), then the AOV sums
+  std::vector<AovPixel> aovs(aovs_.any() ? image.pixel_count() : 0);
   RenderStats local;
   const int tiles = tile_count(width, height, tile_size_);
   for (int y0 = 0; y0 < height; y0 += tile_size_)
     for (int x0 = 0; x0 < width; x0 += tile_size_) {
       const int w = std::min(tile_size_, width - x0), h = std::min(tile_size_, height - y0);
-      for (int s = 0; s < samples_per_axis_ * samples_per_axis_; ++s)  // ss:K: one stratum per dispatch,
-        local.gpu_ms += dispatch_tile(bindings, x0, y0, w, h, s);      // accumulated in pixels_
-      pixels_.download(tile_rgba.data(), sizeof(vec4) * static_cast<size_t>(w) * h);
+      for (int s = 0; s < k * k; ++s)                              // ss:K: one stratum per dispatch,
+        local.gpu_ms += dispatch_tile(bindings, x0, y0, w, h, s);  // accumulated in pixels_
+      const size_t n = static_cast<size_t>(w) * h;
+      pixels_.download(tile_pixels.data(), sizeof(vec4) * planes * n);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-          const vec4 pixel = tile_rgba[static_cast<size_t>(y) * w + x];
-          image.set(x0 + x, y0 + y, glm::vec3(pixel));
-          image.alpha[image.index(x0 + x, y0 + y)] = pixel.a;
+          const size_t i = static_cast<size_t>(y) * w + x, at = image.index(x0 + x, y0 + y);
+          const vec4 pixel = tile_pixels[i];
+          image.set(at, glm::vec3(pixel));
+          image.alpha[at] = pixel.a;
+          if (aovs_.any())
+            aovs[at] = aov_pixel(tile_pixels[n + i], tile_pixels[2 * n + i], std::round(pixel.a * float(k * k)), k);
         }
       ++local.tiles;
       if (progress) progress(local.tiles, tiles);
     }
+  if (aovs_.error) add_edge_error(image, aovs, k);
+  if (aovs_.any()) add_aov_channels(image, aovs_);
+  for (size_t i = 0; i < aovs.size(); ++i) set_aov_pixel(image, aovs_, i, aovs[i]);
   if (stats) *stats = local;
   return image;
 }

@@ -57,6 +57,7 @@ class DirectPass {
   const Scene* scene_;
   int tile_size_;
   int samples_per_axis_;  // ss:K: K^2 dispatches per tile
+  AovSet aovs_;           // the auxiliary channels each frame carries
   SceneBuffers buffers_;
   DiffractionBuffers diffraction_;
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range

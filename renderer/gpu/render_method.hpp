@@ -14,6 +14,7 @@
 #include <string>
 
 #include "diffraction/prepared_diffraction.hpp"
+#include "image/aov.hpp"
 
 namespace facet::gpu {
 
@@ -22,6 +23,7 @@ struct RenderMethod {
   Texture texture = Texture::Naive;
   int samples_per_axis = 1;
   diffraction::DiffractionSettings diffraction{};  // wavelength / Taylor-term overrides of diffraction materials
+  AovSet aovs{};  // the auxiliary channels the pass writes (`--aov`; not part of name())
 
   // Throws facet::Error naming the known methods for anything else.
   static RenderMethod parse(const std::string& text);

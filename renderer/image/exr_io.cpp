@@ -61,6 +61,10 @@ void check_writable(const Image& image, ExrPixelType type, NonFinite non_finite)
     if (!(image.alpha[i] >= 0.0f && image.alpha[i] <= 1.0f))
       throw std::runtime_error("pixel (" + std::to_string(i % image.width) + ", " + std::to_string(i / image.width) +
                                ") coverage " + std::to_string(image.alpha[i]) + " is outside [0, 1]");
+  for (const NamedChannel& channel : image.channels)
+    if (channel.values.size() != image.pixel_count())
+      throw std::runtime_error("channel " + channel.name + " has " + std::to_string(channel.values.size()) +
+                               " values, expected 1 per pixel");
   if (non_finite == NonFinite::Allow) return;
   // Half rounds |v| >= 65520 (the midpoint above the largest half, 65504) to infinity.
   const float limit = type == ExrPixelType::Half ? 65520.0f : std::numeric_limits<float>::infinity();
@@ -189,9 +193,8 @@ void write_exr(const std::filesystem::path& path, const Image& image, const ExrM
     insert_metadata(header, metadata);
     // OpenEXR converts pixel types when reading but not when writing, so half data is rounded here
     // (Imath: round to nearest, ties to even).
-    std::vector<Imath::half> halves, alpha_halves;
+    std::vector<Imath::half> halves;
     if (type == ExrPixelType::Half) halves.assign(image.rgb.begin(), image.rgb.end());
-    if (type == ExrPixelType::Half) alpha_halves.assign(image.alpha.begin(), image.alpha.end());
     const Imf::PixelType pixel_type = type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
     const std::size_t sample_size = type == ExrPixelType::Half ? sizeof(Imath::half) : sizeof(float);
     const char* base = type == ExrPixelType::Half ? reinterpret_cast<const char*>(halves.data())
@@ -203,11 +206,20 @@ void write_exr(const std::filesystem::path& path, const Image& image, const ExrM
       frame.insert(names[c], Imf::Slice::Make(pixel_type, base + c * sample_size, header.dataWindow(), 3 * sample_size,
                                               3 * sample_size * image.width));
     }
-    if (!image.alpha.empty()) {
-      const char* alpha = type == ExrPixelType::Half ? reinterpret_cast<const char*>(alpha_halves.data())
-                                                     : reinterpret_cast<const char*>(image.alpha.data());
-      header.channels().insert("A", Imf::Channel(pixel_type));
-      frame.insert("A", Imf::Slice::Make(pixel_type, alpha, header.dataWindow(), sample_size, sample_size * image.width));
+    // A and the further channels, one value per pixel each (their non-finite values, such as depth's
+    // +inf on the background, are meant).
+    std::vector<std::pair<std::string, const std::vector<float>*>> planes;
+    if (!image.alpha.empty()) planes.emplace_back("A", &image.alpha);
+    for (const NamedChannel& channel : image.channels) planes.emplace_back(channel.name, &channel.values);
+    std::vector<std::vector<Imath::half>> plane_halves(planes.size());
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      const auto& [name, values] = planes[i];
+      if (type == ExrPixelType::Half) plane_halves[i].assign(values->begin(), values->end());
+      const char* data = type == ExrPixelType::Half ? reinterpret_cast<const char*>(plane_halves[i].data())
+                                                    : reinterpret_cast<const char*>(values->data());
+      header.channels().insert(name, Imf::Channel(pixel_type));
+      frame.insert(name,
+                   Imf::Slice::Make(pixel_type, data, header.dataWindow(), sample_size, sample_size * image.width));
     }
     StdioOStream stream(file);
     Imf::OutputFile output(stream, header);
@@ -254,6 +266,11 @@ ScalarImage read_exr_scalar(const std::filesystem::path& path, const std::string
     input.readPixels(window.min.y, window.max.y);
     return image;
   });
+}
+
+bool exr_has_channel(const std::filesystem::path& path, const std::string& channel) {
+  return read_with(path,
+                   [&](Imf::InputFile& input) { return input.header().channels().findChannel(channel) != nullptr; });
 }
 
 }  // namespace facet

@@ -33,8 +33,9 @@ enum class ExrPixelType { Half, Float };
 // is an error. Allow: written as is, e.g. to inspect a broken render.
 enum class NonFinite { Reject, Allow };
 
-// Writes channels R, G, B, and A when the image has coverage (which must lie in [0, 1]), with ZIP
-// compression, atomically: on failure the destination is untouched.
+// Writes channels R, G, B, A when the image has coverage (which must lie in [0, 1]), and the image's
+// further channels (written as they are: NonFinite applies to R, G, B), with ZIP compression,
+// atomically: on failure the destination is untouched.
 void write_exr(const std::filesystem::path& path, const Image& image, const ExrMetadata& metadata, ExrPixelType type,
                NonFinite non_finite = NonFinite::Reject);
 
@@ -46,5 +47,8 @@ Image read_exr(const std::filesystem::path& path, ExrMetadata* metadata = nullpt
 
 // Reads one channel by name (e.g. "Y", "R", "Z") as a scalar texture.
 ScalarImage read_exr_scalar(const std::filesystem::path& path, const std::string& channel);
+
+// Whether the file has a channel of that name.
+bool exr_has_channel(const std::filesystem::path& path, const std::string& channel);
 
 }  // namespace facet

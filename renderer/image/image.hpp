@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 namespace facet {
@@ -13,12 +14,20 @@ namespace facet {
 // before any pixel is allocated (docs/limits.md). 16384^2 RGB floats are 3 GiB.
 inline constexpr int kMaxImageFileSide = 16384;
 
+// A further channel of a frame, by its EXR name ("Z", "N.X", ...): one value per pixel, row-major.
+struct NamedChannel {
+  std::string name;
+  std::vector<float> values;
+};
+
 // Scene-linear RGB, 3 floats per pixel, and optionally the coverage of each pixel: the fraction of its
-// samples that hit geometry (0 background, 1 covered), written as the EXR's A channel.
+// samples that hit geometry (0 background, 1 covered), written as the EXR's A channel, and further
+// channels (the auxiliary outputs of image/aov.hpp).
 struct Image {
   int width = 0, height = 0;
   std::vector<float> rgb;
-  std::vector<float> alpha;  // one per pixel, row-major; empty: no A channel
+  std::vector<float> alpha;            // one per pixel, row-major; empty: no A channel
+  std::vector<NamedChannel> channels;  // written after R, G, B, A
 
   Image() = default;
   Image(int width_, int height_, glm::vec3 fill = glm::vec3(0.0f))

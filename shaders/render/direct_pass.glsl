@@ -18,6 +18,8 @@
 //                      the body of a loop over no primitives once, masked, so absent kinds are compiled out
 //   kPreintegratedSlices, kPreintegratedSliceWords  how many word bindings the `preintegrated` tables
 //                      span and the words each slice starts cells in (render/diffraction_bindings.glsl)
+//   kWritesAovs        the auxiliary outputs (depth, normal, uv, error estimate) are accumulated in
+//                      the pixel buffer after the colours (renderer/gpu/direct_pass.cpp, docs/aov.md)
 // Tracing, the scene's buffers and each material family's shading live in render/*.glsl.
 // Two programs include this file: render_direct.comp, and render_direct_fields.comp, which defines
 // FACET_HEIGHT_FIELDS and so traces microsurfaces' height fields. Lavapipe compiles every call of
@@ -39,6 +41,7 @@ layout(constant_id = FACET_RENDER_SPEC_HAS_SPHERES) const bool kHasSpheres = tru
 layout(constant_id = FACET_RENDER_SPEC_HAS_TRIANGLES) const bool kHasTriangles = true;
 layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICES) const uint kPreintegratedSlices = 1u;
 layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS) const uint kPreintegratedSliceWords = 0xffffffffu;
+layout(constant_id = FACET_RENDER_SPEC_AOVS) const bool kWritesAovs = false;
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS
@@ -58,6 +61,14 @@ const bool kTracesHeightFields = false;
 #ifdef FACET_HEIGHT_FIELDS
 #include "render/microsurface_field.glsl"
 #endif
+
+// This invocation's auxiliary outputs (kWritesAovs), set by radiance() and shade(): camera-space z and
+// the shading normal (0 on a miss); uv and the texture's error estimate (docs/error_estimate.md).
+vec4 aov_depth_normal = vec4(0.0);
+vec4 aov_uv_error = vec4(0.0);
+// kappa of eq. 1 (docs/error_estimate.md): the filtered colour's error per unit of the mapped colour's
+// spread over the footprint, fitted on colormap_noise_plane and colormap_objects.
+const float kErrorMismatch = 0.18;
 
 vec3 camera_ray(vec2 film) {
   return camera_ray_direction(globals.camera_forward.xyz, globals.camera_right.xyz, globals.camera_up.xyz, film,
@@ -112,7 +123,12 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
       duv_dx = uv_differential(o, camera_ray(film + vec2(pixel_step, 0.0)), p, n, s.dpdu, s.dpdv);
       duv_dy = uv_differential(o, camera_ray(film + vec2(0.0, pixel_step)), p, n, s.dpdu, s.dpdv);
     }
-    albedo = textured_albedo(m, s.uv, duv_dx, duv_dy);
+    vec3 spread;
+    albedo = textured_albedo(m, s.uv, duv_dx, duv_dy, spread);
+    if (kWritesAovs) {  // the albedo's spread as radiance, scaled by the filter-mismatch factor (eq. 1)
+      vec3 e = lambert_radiance(spread, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
+      aov_uv_error.z = kErrorMismatch * (e.r + e.g + e.b) / 3.0;
+    }
   }
   vec3 diffracted = vec3(0.0);  // a diffraction material's albedo is its Lambertian base
   if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION)
@@ -126,6 +142,13 @@ vec4 radiance(vec2 film, float pixel_step) {
   vec3 d = camera_ray(film);
   Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields, kTextureMethod >= 3u,
                   camera_ray(film + vec2(pixel_step, 0.0)), camera_ray(film + vec2(0.0, pixel_step)));
+  if (kWritesAovs && hit.material != kNoHit) {
+    vec3 n = normalize(hit.normal);
+    aov_depth_normal = vec4(hit.t * dot(d, globals.camera_forward.xyz), dot(n, d) > 0.0 ? -n : n);
+    // uv of macro-surfaces; a microsurface's hits keep 0 (its field has texel coordinates of its own).
+    if (material_at(hit.material).kind.x != FACET_MATERIAL_MICROSURFACE)
+      aov_uv_error.xy = surface_uv(hit, o + hit.t * d).uv;
+  }
   return vec4(shade(o, d, hit, film, pixel_step), hit.material == kNoHit ? 0.0 : 1.0);
 }
 
@@ -150,6 +173,11 @@ void main() {
   uint i = at.y * tile.rect.z + at.x;
   vec4 sum = tile.stratum.z != 0u ? pixels[i] + sample_value : sample_value;
   pixels[i] = tile.stratum.z == k * k - 1u ? sum / float(k * k) : sum;
+  if (kWritesAovs) {  // sums over the strata, divided on the host by the hits (the error by k^2)
+    uint n = tile.rect.z * tile.rect.w;
+    pixels[n + i] = tile.stratum.z != 0u ? pixels[n + i] + aov_depth_normal : aov_depth_normal;
+    pixels[2u * n + i] = tile.stratum.z != 0u ? pixels[2u * n + i] + aov_uv_error : aov_uv_error;
+  }
 }
 
 #endif

@@ -156,10 +156,42 @@ vec2 footprint_moments(uint first, uint count, vec2 uv, float lod, vec2 axis_a, 
   return mix(a, vec2(b.x, b.y + b.z), lod - l0);
 }
 
+// The spread of the mapped colour under t ~ N(mu, sigma^2): sqrt(E[colormap(t)^2] - mean^2) per channel
+// (docs/error_estimate.md, eq. 2), `mean` the pass's exact E[colormap(t)]. On a segment the colour is
+// p + q z in the standard variable z = (t - mu)/sigma, and over [a, b]
+//   integral (p + q z)^2 phi(z) dz = p^2 dPhi + 2 p q (phi(a) - phi(b)) + q^2 (dPhi + a phi(a) - b phi(b)),
+// the end tails adding c_first^2 Phi(z_first) and c_last^2 Phi(-z_last).
+vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
+  float m = colormap_position(map, mu), s = max(sigma / abs(map.domain.y - map.domain.x), 1e-30);
+  uint first = map.info.x, last = map.info.x + map.info.y - 1u;
+  vec4 a = colormap_point(first);
+  float za = colormap_standardize(a.w, m, s);
+  ColormapKnot ka = colormap_knot_or_saturated(za);
+  vec3 second = a.rgb * a.rgb * ka.Phi;
+  for (uint i = first; i < last; ++i) {
+    vec4 b = colormap_point(i + 1u);
+    float zb = colormap_standardize(b.w, m, s);
+    ColormapKnot kb = colormap_knot_or_saturated(zb);
+    bool linear = map.info.z != 1u && zb > za;
+    vec3 q = linear ? (b.rgb - a.rgb) / (zb - za) : vec3(0.0);
+    vec3 p = a.rgb - q * za;  // the colour at z = 0 (t = mu)
+    float dPhi = max(kb.Phi - ka.Phi, 0.0), pdf_a = sf_normal_pdf(za), pdf_b = sf_normal_pdf(zb);
+    second += p * p * dPhi + 2.0 * p * q * (pdf_a - pdf_b) + q * q * (dPhi + za * pdf_a - zb * pdf_b);
+    a = b;
+    za = zb;
+    ka = kb;
+  }
+  second += a.rgb * a.rgb * ka.Phi_reflected;
+  return sqrt(max(second - mean * mean, vec3(0.0)));
+}
+
 // The albedo of a colour-mapped texture at the hit, by the method of kTextureMethod, averaged over
 // the taps of the anisotropic footprint with uv axes duv_dx, duv_dy (unused by naive). Moments of
-// the taps combine exactly (a mixture's E[t] and E[t^2] are the means of the taps').
-vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy) {
+// the taps combine exactly (a mixture's E[t] and E[t^2] are the means of the taps'). `spread` is the
+// mapped colour's spread over the footprint (colormap_spread) where the error estimate is written
+// (kWritesAovs and filtered), else 0.
+vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 spread) {
+  spread = vec3(0.0);
   GpuColormap map = colormap_record(m.texture.w);
   if (kTextureMethod == 0u) return colormap_at(map, sample_level(m.texture.x, uv).x);
   uvec4 level0 = texture_level_at(m.texture.x).info;
@@ -180,7 +212,19 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy) {
   }
   if (kTextureMethod < 3u) return colour / f.taps;
   moments /= f.taps;
-  return colormap_gaussian(map, moments.x, sqrt(max(moments.y - moments.x * moments.x, 0.0)));
+  float sigma = sqrt(max(moments.y - moments.x * moments.x, 0.0));
+  vec3 albedo = colormap_gaussian(map, moments.x, sigma);
+  if (kWritesAovs && kTextureMethod == 3u) {
+    // eq. 4: from 1 down to 1/4 as the footprint gathers the texture's whole variance (its coarsest
+    // moment level): its value distribution then tends to the texture's histogram, whose mean and
+    // variance the Gaussian has.
+    vec4 top = sample_level(m.texture.x + m.texture.y - 1u, uv);
+    float total = top.y + top.z - top.x * top.x;
+    float gathered = total > 0.0 ? min(sigma * sigma / total, 1.0) : 1.0;
+    float structured = sqrt(1.0 - 0.9375 * gathered);
+    spread = structured * colormap_spread(map, moments.x, sigma, albedo);
+  }
+  return albedo;
 }
 
 #endif

@@ -105,6 +105,25 @@ TEST(ExrIo, CoverageIsTheAChannel) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.exr"));
 }
 
+// Further channels (the auxiliary outputs) are written by name beside R, G, B, A, +inf as is (a depth
+// channel's background); one of the wrong length is refused without a file.
+TEST(ExrIo, FurtherChannelsAreWrittenByName) {
+  TempDir dir;
+  Image image(2, 2, glm::vec3(0.5f));
+  const float inf = std::numeric_limits<float>::infinity();
+  image.channels = {{"Z", {1.0f, 2.5f, inf, 4.0f}}, {"N.X", {0.0f, -1.0f, 0.5f, 0.25f}}};
+  for (const ExrPixelType type : {ExrPixelType::Half, ExrPixelType::Float}) {
+    write_exr(dir / "c.exr", image, {}, type);
+    EXPECT_EQ(read_exr_scalar(dir / "c.exr", "Z").values, image.channels[0].values);
+    EXPECT_EQ(read_exr_scalar(dir / "c.exr", "N.X").values, image.channels[1].values);
+    EXPECT_TRUE(exr_has_channel(dir / "c.exr", "N.X"));
+    EXPECT_FALSE(exr_has_channel(dir / "c.exr", "A"));
+  }
+  image.channels[1].values.pop_back();
+  EXPECT_THROW(write_exr(dir / "bad.exr", image, {}, ExrPixelType::Float), Error);
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.exr"));
+}
+
 TEST(ExrIo, HalfRoundTripMatchesHalfRounding) {
   TempDir dir;
   const Image image = awkward_image();

@@ -1,0 +1,18 @@
+// The edge term of `filtered`'s per-pixel error estimate (docs/error_estimate.md, eq. 3): a pixel whose
+// neighbour lies across a geometric edge (coverage or normal jumps) sees one side of the edge
+// where the truth mixes both, so it is off by a fraction of the colour step (a quarter, measured), less
+// with K x K strata.
+#pragma once
+
+#include <vector>
+
+#include "image/aov.hpp"
+#include "image/image.hpp"
+
+namespace facet {
+
+// Adds the edge term to pixels[i].error, from the image's colours and coverage and each pixel's normal
+// (pixels: one per pixel, row-major; image.alpha must be present).
+void add_edge_error(const Image& image, std::vector<AovPixel>& pixels, int samples_per_axis);
+
+}  // namespace facet
