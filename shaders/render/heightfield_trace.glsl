@@ -167,7 +167,6 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
   vec2 tz_all = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, f.range.x - margin_z, f.range.y + margin_z);
   float t = max(r.t_lo, tz_all.x), t_end = min(r.t_hi, tz_all.y);
   if (!(t <= t_end)) return -1.0;
-  bool smoothed = f.leaf > 0 || f.blend > 0.0;
   ivec2 dir = ivec2(sign(r.d.xy));
   vec2 tile_size = vec2(f.size);
   ivec2 tile = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, 0.0, tile_size.x, tile_size.x * float(f.tiles.x), f.tiles.x),
@@ -194,7 +193,11 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     bool leaf = level == f.leaf;
     vec4 corners = vec4(0.0);
     vec2 z;
-    if (leaf && smoothed) {  // a smoothed leaf lies between its corners, which may pass the dilated bounds
+    // A leaf is bounded by its own corners: a smoothed leaf lies between them and may pass the dilated
+    // bounds; a cell's min-max bound is their extremes (microsurface_upload). So each step loads a
+    // leaf's corners once, for the bound and the cell test (lavapipe runs both branches when its 8
+    // lanes disagree, and a second copy of the loads when a lane tests a cell).
+    if (leaf) {
       corners = heightfield_leaf_corners(f, level, node, tile, e);
       z = vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
                max(max(corners.x, corners.y), max(corners.z, corners.w)));
@@ -213,7 +216,6 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
         node = min(2 * node + half_xy, heightfield_nodes_per_tile(f, level) - 1);  // no upper half where the tile ends
         continue;
       }
-      if (!smoothed) corners = heightfield_leaf_corners(f, level, node, tile, e);
       float hit;
       if (level == 0) {  // a cell: as the reference tests it, in texels
         hit = heightfield_cell_hit(r.o, r.d, r.inv_d, e.x, e.z, corners, r.t_lo, r.t_hi);
