@@ -156,10 +156,30 @@ int heightfield_start_index(float o, float d, float inv_d, float t, float base, 
   return i;
 }
 
+// The level a ray entering a tile at t starts its walk at (t_end: where it leaves the field's height
+// range): the nodes at least as wide as the distance it crosses within the range. Coarser nodes hold
+// about the whole range, to which the ray is already cut, so the steps down to these from the tile's
+// root rarely skip anything. Any node holding the ray at t is an exact start (nothing before t remains,
+// and the walk climbs to coarser nodes as it crosses their faces).
+int heightfield_start_level(HeightField f, HeightFieldRay r, float t, float t_end, bool from_inside) {
+  if (from_inside) return f.leaf;
+  float span = length(r.d.xy) * (t_end - t);
+  return clamp(int(ceil(log2(max(span, 1.0)))), f.leaf, f.top);
+}
+
+// The node of MIP level `level` of tile `tile` that holds the ray at t.
+ivec2 heightfield_start_node(HeightField f, HeightFieldRay r, float t, ivec2 tile, int level) {
+  vec2 tile_size = vec2(f.size), base = vec2(tile) * tile_size;
+  float w = float(1 << level);
+  ivec2 count = heightfield_nodes_per_tile(f, level);
+  return ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, base.x, w, tile_size.x, count.x),
+               heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, base.y, w, tile_size.y, count.y));
+}
+
 // The ray's first hit t with the field in (r.t_lo, r.t_hi), or -1. Stackless: the ray sits in one
 // node at parameter t. A node whose height bounds the ray misses between t and its exit is left for
 // its neighbour across the exit face, entered at its coarsest ancestor the ray has not been in (the
-// next tile's root across a tile face); one it meets is descended into at the child holding the ray
+// next tile's start node, heightfield_start_level, across a tile face); one it meets is descended into at the child holding the ray
 // where it first reaches the bounds. Nodes come in order along the ray, so the first hit of a leaf is
 // the nearest (shadow rays need no other), and no node is entered twice.
 float heightfield_search(HeightField f, HeightFieldRay r) {
@@ -171,19 +191,12 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
   vec2 tile_size = vec2(f.size);
   ivec2 tile = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, 0.0, tile_size.x, tile_size.x * float(f.tiles.x), f.tiles.x),
                      heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, 0.0, tile_size.y, tile_size.y * float(f.tiles.y), f.tiles.y));
-  int level = f.top;
-  ivec2 node = ivec2(0);
-  if (t == 0.0) {
-    // The ray starts inside the field's box, as shadow rays leaving the surface do: start at the leaf
-    // under its origin (nothing of the ray lies before it). From a point on the surface, which every
-    // ancestor of that leaf holds, a descent from the tile's root would skip nothing.
-    level = f.leaf;
-    vec2 base = vec2(tile) * tile_size;
-    float w = float(1 << level);
-    ivec2 count = heightfield_nodes_per_tile(f, level);
-    node = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, base.x, w, tile_size.x, count.x),
-                 heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, base.y, w, tile_size.y, count.y));
-  }
+  // A ray starting inside the field's box, as shadow rays leaving the surface do, starts at the leaf
+  // under its origin: from a point on the surface, which every ancestor of that leaf holds, a descent
+  // would skip nothing.
+  bool from_inside = t == 0.0;
+  int level = heightfield_start_level(f, r, t, t_end, from_inside);
+  ivec2 node = heightfield_start_node(f, r, t, tile, level);
   for (int step = 0; step < FACET_HEIGHTFIELD_MAX_STEPS; ++step) {
     vec4 e = heightfield_extent(f, level, node, tile);
     float exit_x = heightfield_plane_t(r.o.x, r.d.x, r.inv_d.x, r.d.x > 0.0 ? e.y : e.x);
@@ -233,8 +246,8 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     if (out_of_tile != ivec2(0)) {
       tile += out_of_tile;
       if (any(lessThan(tile, ivec2(0))) || any(greaterThanEqual(tile, f.tiles))) break;
-      level = f.top;
-      node = ivec2(0);
+      level = heightfield_start_level(f, r, t, t_end, false);
+      node = heightfield_start_node(f, r, t, tile, level);
     } else {
       int k = findMSB((node.x ^ next.x) | (node.y ^ next.y));  // the levels whose ancestors differ
       if (k < 0) break;  // no face crossed: t stuck (a NaN from a direction too small to invert)
