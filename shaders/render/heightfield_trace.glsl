@@ -178,10 +178,10 @@ ivec2 heightfield_start_node(HeightField f, HeightFieldRay r, float t, ivec2 til
 
 // The ray's first hit t with the field in (r.t_lo, r.t_hi), or -1. Stackless: the ray sits in one
 // node at parameter t. A node whose height bounds the ray misses between t and its exit is left for
-// its neighbour across the exit face, entered at its coarsest ancestor the ray has not been in (the
-// next tile's start node, heightfield_start_level, across a tile face); one it meets is descended into at the child holding the ray
-// where it first reaches the bounds. Nodes come in order along the ray, so the first hit of a leaf is
-// the nearest (shadow rays need no other), and no node is entered twice.
+// its neighbour across the exit face, entered at its coarsest ancestor the ray has not been in (across
+// a tile face, the next tile's node at heightfield_start_level); one it meets is descended into at the
+// child holding the ray where it first reaches the bounds. Nodes come in order along the ray, so the
+// first hit of a leaf is the nearest (shadow rays need no other), and no node is entered twice.
 float heightfield_search(HeightField f, HeightFieldRay r) {
   float margin_z = 1e-5 * (abs(r.o.z) + abs(f.range.x) + abs(f.range.y));
   vec2 tz_all = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, f.range.x - margin_z, f.range.y + margin_z);
