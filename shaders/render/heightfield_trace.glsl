@@ -156,35 +156,47 @@ int heightfield_start_index(float o, float d, float inv_d, float t, float base, 
   return i;
 }
 
+// The level a ray entering a tile at t starts its walk at (t_end: where it leaves the field's height
+// range): the nodes at least as wide as the distance it crosses within the range. Coarser nodes hold
+// about the whole range, to which the ray is already cut, so the steps down to these from the tile's
+// root rarely skip anything. Any node holding the ray at t is an exact start (nothing before t remains,
+// and the walk climbs to coarser nodes as it crosses their faces).
+int heightfield_start_level(HeightField f, HeightFieldRay r, float t, float t_end, bool from_inside) {
+  if (from_inside) return f.leaf;
+  float span = length(r.d.xy) * (t_end - t);
+  return clamp(int(ceil(log2(max(span, 1.0)))), f.leaf, f.top);
+}
+
+// The node of MIP level `level` of tile `tile` that holds the ray at t.
+ivec2 heightfield_start_node(HeightField f, HeightFieldRay r, float t, ivec2 tile, int level) {
+  vec2 tile_size = vec2(f.size), base = vec2(tile) * tile_size;
+  float w = float(1 << level);
+  ivec2 count = heightfield_nodes_per_tile(f, level);
+  return ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, base.x, w, tile_size.x, count.x),
+               heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, base.y, w, tile_size.y, count.y));
+}
+
 // The ray's first hit t with the field in (r.t_lo, r.t_hi), or -1. Stackless: the ray sits in one
 // node at parameter t. A node whose height bounds the ray misses between t and its exit is left for
-// its neighbour across the exit face, entered at its coarsest ancestor the ray has not been in (the
-// next tile's root across a tile face); one it meets is descended into at the child holding the ray
-// where it first reaches the bounds. Nodes come in order along the ray, so the first hit of a leaf is
-// the nearest (shadow rays need no other), and no node is entered twice.
+// its neighbour across the exit face, entered at its coarsest ancestor the ray has not been in (across
+// a tile face, the next tile's node at heightfield_start_level); one it meets is descended into at the
+// child holding the ray where it first reaches the bounds. Nodes come in order along the ray, so the
+// first hit of a leaf is the nearest (shadow rays need no other), and no node is entered twice.
 float heightfield_search(HeightField f, HeightFieldRay r) {
   float margin_z = 1e-5 * (abs(r.o.z) + abs(f.range.x) + abs(f.range.y));
   vec2 tz_all = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, f.range.x - margin_z, f.range.y + margin_z);
   float t = max(r.t_lo, tz_all.x), t_end = min(r.t_hi, tz_all.y);
   if (!(t <= t_end)) return -1.0;
-  bool smoothed = f.leaf > 0 || f.blend > 0.0;
   ivec2 dir = ivec2(sign(r.d.xy));
   vec2 tile_size = vec2(f.size);
   ivec2 tile = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, 0.0, tile_size.x, tile_size.x * float(f.tiles.x), f.tiles.x),
                      heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, 0.0, tile_size.y, tile_size.y * float(f.tiles.y), f.tiles.y));
-  int level = f.top;
-  ivec2 node = ivec2(0);
-  if (t == 0.0) {
-    // The ray starts inside the field's box, as shadow rays leaving the surface do: start at the leaf
-    // under its origin (nothing of the ray lies before it). From a point on the surface, which every
-    // ancestor of that leaf holds, a descent from the tile's root would skip nothing.
-    level = f.leaf;
-    vec2 base = vec2(tile) * tile_size;
-    float w = float(1 << level);
-    ivec2 count = heightfield_nodes_per_tile(f, level);
-    node = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, base.x, w, tile_size.x, count.x),
-                 heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, base.y, w, tile_size.y, count.y));
-  }
+  // A ray starting inside the field's box, as shadow rays leaving the surface do, starts at the leaf
+  // under its origin: from a point on the surface, which every ancestor of that leaf holds, a descent
+  // would skip nothing.
+  bool from_inside = t == 0.0;
+  int level = heightfield_start_level(f, r, t, t_end, from_inside);
+  ivec2 node = heightfield_start_node(f, r, t, tile, level);
   for (int step = 0; step < FACET_HEIGHTFIELD_MAX_STEPS; ++step) {
     vec4 e = heightfield_extent(f, level, node, tile);
     float exit_x = heightfield_plane_t(r.o.x, r.d.x, r.inv_d.x, r.d.x > 0.0 ? e.y : e.x);
@@ -194,7 +206,11 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     bool leaf = level == f.leaf;
     vec4 corners = vec4(0.0);
     vec2 z;
-    if (leaf && smoothed) {  // a smoothed leaf lies between its corners, which may pass the dilated bounds
+    // A leaf is bounded by its own corners: a smoothed leaf lies between them and may pass the dilated
+    // bounds; a cell's min-max bound is their extremes (microsurface_upload). So each step loads a
+    // leaf's corners once, for the bound and the cell test (lavapipe runs both branches when its 8
+    // lanes disagree, and a second copy of the loads when a lane tests a cell).
+    if (leaf) {
       corners = heightfield_leaf_corners(f, level, node, tile, e);
       z = vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
                max(max(corners.x, corners.y), max(corners.z, corners.w)));
@@ -213,7 +229,6 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
         node = min(2 * node + half_xy, heightfield_nodes_per_tile(f, level) - 1);  // no upper half where the tile ends
         continue;
       }
-      if (!smoothed) corners = heightfield_leaf_corners(f, level, node, tile, e);
       float hit;
       if (level == 0) {  // a cell: as the reference tests it, in texels
         hit = heightfield_cell_hit(r.o, r.d, r.inv_d, e.x, e.z, corners, r.t_lo, r.t_hi);
@@ -231,8 +246,8 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     if (out_of_tile != ivec2(0)) {
       tile += out_of_tile;
       if (any(lessThan(tile, ivec2(0))) || any(greaterThanEqual(tile, f.tiles))) break;
-      level = f.top;
-      node = ivec2(0);
+      level = heightfield_start_level(f, r, t, t_end, false);
+      node = heightfield_start_node(f, r, t, tile, level);
     } else {
       int k = findMSB((node.x ^ next.x) | (node.y ^ next.y));  // the levels whose ancestors differ
       if (k < 0) break;  // no face crossed: t stuck (a NaN from a direction too small to invert)
