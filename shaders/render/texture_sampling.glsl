@@ -1,6 +1,6 @@
 // Colour-mapped textures in the direct pass: bilinear and trilinear lookups of the MIP chains, the
 // colour map at a point and against a Gaussian, and the albedo of a texture by the method selected
-// with the specialization constant kTextureMethod (declared by the including shader).
+// with the specialization constants kTextureMethod and kWritesAovs (declared by the including shader).
 #ifndef FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #define FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #include "lib/colormap_filter.glsl"

@@ -8,6 +8,7 @@
 
 layout(local_size_x = 64) in;
 layout(constant_id = FACET_RENDER_SPEC_TEXTURE_METHOD) const uint kTextureMethod = 4u;
+const bool kWritesAovs = false;  // texture_sampling.glsl's error estimate is not probed here
 
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
