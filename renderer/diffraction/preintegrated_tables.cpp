@@ -77,6 +77,43 @@ std::vector<char> live_bins(const SpectralTables& t) {
   return live;
 }
 
+// The window weights along one axis (eq. F.2's e_j separates: e_j = e_x(j_x) e_y(j_y)) for every
+// wavelength at `count` node coordinates origin + i spacing: the nearest bin j0, e(j0 + d) for
+// d = -r..r and their sum. e_x depends only on (column, wavelength) and e_y on (row, wavelength), so
+// each is computed once per column or row instead of once per node.
+struct AxisWindows {
+  int count = 0, width = 0;  // coordinates; 2r + 1
+  std::vector<int> j0;       // [wavelength * count + i]
+  std::vector<double> sum;
+  std::vector<double> e;  // [(wavelength * count + i) * width + d + r]
+
+  size_t at(size_t wavelength, int i) const { return wavelength * count + i; }
+};
+
+AxisWindows axis_windows(const SpectralTables& t, const std::vector<WavelengthPowers>& powers, int axis,
+                         double origin, double spacing, int count) {
+  AxisWindows w;
+  w.count = count;
+  w.width = 2 * t.r + 1;
+  w.j0.resize(powers.size() * count);
+  w.sum.assign(w.j0.size(), 0.0);
+  w.e.resize(w.j0.size() * w.width);
+  for (size_t l = 0; l < powers.size(); ++l)
+    for (int i = 0; i < count; ++i) {
+      const size_t at = w.at(l, i);
+      const double alpha = powers[l].k * (origin + i * spacing);
+      w.j0[at] = diffraction_nearest_bin(alpha, t.period_nm);
+      for (int d = -t.r; d <= t.r; ++d) {
+        glm::dvec2 delta(0.0);
+        delta[axis] = alpha - diffraction_bin_frequency(w.j0[at] + d, w.j0[at] + d, t.period_nm)[axis];
+        const double e = diffraction_window_weight(delta, t.sigma_nm);
+        w.e[at * w.width + d + t.r] = e;
+        w.sum[at] += e;
+      }
+    }
+  return w;
+}
+
 // Adds weight k^2 sum_{n+n'=p} Re(b_n conj b_n') to T'_p, the coefficient of w^p (eq. F.4'), at
 // one node (u, v) for one wavelength, with b_n = (i k h_s)^n / n! C_n. The pairs (n, n') and
 // (n', n) are conjugates, so their imaginary parts cancel. Complex products are written out
@@ -86,13 +123,12 @@ class NodeIntegrator {
   explicit NodeIntegrator(const SpectralTables& t, const std::vector<char>& live)
       : t_(t), live_(live), c_re_(t.N), c_im_(t.N), b_re_(t.N), b_im_(t.N), q_(2 * t.N - 1) {}
 
-  void add(glm::dvec2 uv, const WavelengthPowers& s, glm::dvec3 weight, std::vector<glm::dvec3>& T) {
+  // Column window x at (iu, wavelength), row window y at (iv, wavelength).
+  void add(const AxisWindows& x, size_t x_at, const AxisWindows& y, size_t y_at, const WavelengthPowers& s,
+           glm::dvec3 weight, std::vector<glm::dvec3>& T) {
     const int N = t_.N, r = t_.r;
-    const glm::dvec2 alpha = s.k * uv;
-    const int jx0 = diffraction_nearest_bin(alpha.x, t_.period_nm),
-              jy0 = diffraction_nearest_bin(alpha.y, t_.period_nm);
-    // The live bins of the window first: most (node, wavelength) pairs of a periodic grating have
-    // none, and then no window weight needs computing.
+    const int jx0 = x.j0[x_at], jy0 = y.j0[y_at];
+    // The live bins of the window first: most (node, wavelength) pairs of a periodic grating have none.
     int live_count = 0;
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
@@ -100,18 +136,9 @@ class NodeIntegrator {
         if (bin.valid && live_[bin.index])
           window_[live_count++] = {dx + r, dy + r, bin.index * t_.stored_terms, bin.conjugate};
       }
-    if (live_count == 0) return;
-    // The window weight separates: e_j = e_x(j_x) e_y(j_y).
-    double ex[kMaxRadius * 2 + 1], ey[kMaxRadius * 2 + 1];
-    double sum_x = 0.0, sum_y = 0.0;
-    for (int d = -r; d <= r; ++d) {
-      const glm::dvec2 f = diffraction_bin_frequency(jx0 + d, jy0 + d, t_.period_nm);
-      ex[d + r] = diffraction_window_weight(glm::dvec2(alpha.x - f.x, 0.0), t_.sigma_nm);
-      ey[d + r] = diffraction_window_weight(glm::dvec2(0.0, alpha.y - f.y), t_.sigma_nm);
-      sum_x += ex[d + r];
-      sum_y += ey[d + r];
-    }
-    if (sum_x * sum_y < kNegligibleWindow) return;
+    if (live_count == 0 || x.sum[x_at] * y.sum[y_at] < kNegligibleWindow) return;
+    const double* ex = &x.e[x_at * x.width];
+    const double* ey = &y.e[y_at * y.width];
     std::fill(c_re_.begin(), c_re_.end(), 0.0);
     std::fill(c_im_.begin(), c_im_.end(), 0.0);
     for (int i = 0; i < live_count; ++i) {
@@ -236,13 +263,15 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   const std::vector<char> live = live_bins(tables);
   const size_t nodes = static_cast<size_t>(t.nu) * t.nv;
   std::vector<glm::dvec3> T(nodes * t.terms, glm::dvec3(0.0));
+  const AxisWindows columns = axis_windows(tables, powers, 0, t.origin.x, t.spacing.x, t.nu);
   tbb::parallel_for(0, t.nv, [&](int iv) {
     NodeIntegrator integrator(tables, live);
+    const AxisWindows row = axis_windows(tables, powers, 1, t.origin.y + iv * t.spacing.y, 0.0, 1);
     std::vector<glm::dvec3> node(t.terms);
     for (int iu = 0; iu < t.nu; ++iu) {
-      const glm::dvec2 uv = t.origin + glm::dvec2(iu, iv) * t.spacing;
       std::fill(node.begin(), node.end(), glm::dvec3(0.0));
-      for (size_t i = 0; i < powers.size(); ++i) integrator.add(uv, powers[i], weights[i], node);
+      for (size_t i = 0; i < powers.size(); ++i)
+        integrator.add(columns, columns.at(i, iu), row, row.at(i, 0), powers[i], weights[i], node);
       glm::dvec3* out = &T[(static_cast<size_t>(iv) * t.nu + iu) * t.terms];
       for (int q = 0; q < t.terms; ++q)
         for (int p = q; p < t.terms; ++p) out[q] += recentre[q * t.terms + p] * node[p];
