@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
 #include <optional>
 #include <vector>
 
@@ -23,8 +22,6 @@ struct DiffractionSettings {
   // The most bytes of `preintegrated` words one render-pass binding holds: 0 for the device's limit;
   // tests lower it to split small tables (gpu/preintegrated_slices.hpp).
   std::uint64_t preintegrated_binding_bytes = 0;
-  // Where `preintegrated` tables are kept across runs; unset: table_cache_dir() (preintegrated_cache.hpp).
-  std::optional<std::filesystem::path> table_cache;
 };
 
 struct PreparedDiffraction {

@@ -51,7 +51,7 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
                               sizeof(std::uint32_t) * binding_words * FACET_RENDER_PREINTEGRATED_SLICES);
   const diffraction::DiffractionMethod method = scene_diffraction_method(scene, settings);
   const auto all = diffraction::prepare_scene_diffraction(scene, settings);
-  const std::filesystem::path table_cache = settings.table_cache.value_or(diffraction::table_cache_dir());
+  const std::filesystem::path table_cache = diffraction::table_cache_dir();
   diffraction::TableCacheUse cache_use = diffraction::TableCacheUse::Off;
   for (size_t i = 0; i < all.size(); ++i) {
     const auto& prepared = all[i];
