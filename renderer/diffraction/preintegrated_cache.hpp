@@ -28,7 +28,7 @@ struct CachedPreintegratedTables {
 };
 
 // build_preintegrated_tables, read from `cache_dir/preintegrated/<key>.tables` when that file is
-// complete and this key's (size, key and a digest of its bytes are checked: a torn or corrupt file is
+// complete and this key's (size, key and a checksum of its bytes are checked: a torn or corrupt file is
 // rebuilt, never trusted), else built and written there atomically. An empty cache_dir builds without
 // caching. A cache that cannot be written costs a one-line warning, not the render.
 CachedPreintegratedTables cached_preintegrated_tables(const std::filesystem::path& cache_dir,
