@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <memory>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <type_traits>
@@ -150,8 +150,7 @@ std::optional<PreintegratedTables> read_tables(const std::filesystem::path& file
 std::filesystem::path table_cache_dir() {
   if (const char* dir = std::getenv("FACET_CACHE_DIR")) return dir;
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "facet";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return std::filesystem::path(home) / ".cache" / "facet";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "facet";
   return {};
 }
 
@@ -173,9 +172,12 @@ std::string preintegrated_cache_key(const SpectralTables& tables, const Waveleng
 
 const char* table_cache_use_name(TableCacheUse use) {
   switch (use) {
-    case TableCacheUse::Hit: return "hit";
-    case TableCacheUse::Miss: return "miss";
-    default: return "off";
+    case TableCacheUse::Hit:
+      return "hit";
+    case TableCacheUse::Miss:
+      return "miss";
+    default:
+      return "off";
   }
 }
 
@@ -190,8 +192,7 @@ CachedPreintegratedTables cached_preintegrated_tables(const std::filesystem::pat
   const std::string key = preintegrated_cache_key(tables, samples, domain, settings);
   const std::filesystem::path file = cache_dir / "preintegrated" / (key + ".tables");
   if (auto cached = read_tables(file, key, layout)) return {std::move(*cached), TableCacheUse::Hit};
-  CachedPreintegratedTables result{build_preintegrated_tables(tables, samples, domain, settings),
-                                   TableCacheUse::Miss};
+  CachedPreintegratedTables result{build_preintegrated_tables(tables, samples, domain, settings), TableCacheUse::Miss};
   try {
     write_file_atomically(file, [&](std::FILE* out) { write_tables(out, result.tables, key); });
   } catch (const std::exception& e) {

@@ -90,8 +90,8 @@ struct AxisWindows {
   size_t at(size_t wavelength, int i) const { return wavelength * count + i; }
 };
 
-AxisWindows axis_windows(const SpectralTables& t, const std::vector<WavelengthPowers>& powers, int axis,
-                         double origin, double spacing, int count) {
+AxisWindows axis_windows(const SpectralTables& t, const std::vector<WavelengthPowers>& powers, int axis, double origin,
+                         double spacing, int count) {
   AxisWindows w;
   w.count = count;
   w.width = 2 * t.r + 1;
@@ -155,10 +155,18 @@ class NodeIntegrator {
     for (int n = 0; n < N; ++n) {
       const double re = s.power[n] * c_re_[n], im = s.power[n] * c_im_[n];
       switch (n & 3) {
-        case 0: b_re_[n] = re, b_im_[n] = im; break;
-        case 1: b_re_[n] = -im, b_im_[n] = re; break;
-        case 2: b_re_[n] = -re, b_im_[n] = -im; break;
-        default: b_re_[n] = im, b_im_[n] = -re; break;
+        case 0:
+          b_re_[n] = re, b_im_[n] = im;
+          break;
+        case 1:
+          b_re_[n] = -im, b_im_[n] = re;
+          break;
+        case 2:
+          b_re_[n] = -re, b_im_[n] = -im;
+          break;
+        default:
+          b_re_[n] = im, b_im_[n] = -re;
+          break;
       }
     }
     std::fill(q_.begin(), q_.end(), 0.0);

@@ -32,9 +32,8 @@ DiffractionMethod scene_diffraction_method(const Scene& scene, const diffraction
 
 diffraction::TableCacheUse append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
                                              std::uint32_t scene_material,
-                                             const diffraction::PreparedDiffraction& prepared,
-                                             DiffractionMethod method, std::uint64_t max_bytes,
-                                             const std::filesystem::path& table_cache) {
+                                             const diffraction::PreparedDiffraction& prepared, DiffractionMethod method,
+                                             std::uint64_t max_bytes, const std::filesystem::path& table_cache) {
   const auto& source = std::get<DiffractionMaterial>(scene.materials[scene_material]);
   diffraction::TableCacheUse use = diffraction::TableCacheUse::Off;
   if (method == DiffractionMethod::Preintegrated) {

@@ -93,8 +93,9 @@ TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine
   gpu::FastPathData data;
   gpu::GpuDiffractionMaterial entry{};
   try {
-    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096,
-                           std::filesystem::path(FACET_BINARY_DIR) / "refused_tables_cache");  // refused before any lookup
+    gpu::append_fast_paths(
+        data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096,
+        std::filesystem::path(FACET_BINARY_DIR) / "refused_tables_cache");  // refused before any lookup
     FAIL() << "4 KiB of tables accepted";
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -174,8 +175,8 @@ TEST(DiffractionFastPathsRender, SecondRenderReadsTheTablesFromTheCache) {
   auto render = [&](const std::string& cache, const std::string& coherence) {
     const auto r = test::run_command("FACET_CACHE_DIR='" + cache + "' " + std::string(FACET_EXECUTABLE) + " render " +
                                      kPlate.string() + " --width 24 --height 24 --diffraction preintegrated " +
-                                     "--set camera.fov_y=30 --set materials.grating.grating.coherence_um=" + coherence + " -o " +
-                                     out.string());
+                                     "--set camera.fov_y=30 --set materials.grating.grating.coherence_um=" + coherence +
+                                     " -o " + out.string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     ExrMetadata metadata;
     Image image = read_exr(out, &metadata);
