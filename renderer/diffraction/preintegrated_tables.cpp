@@ -31,32 +31,38 @@ double shortest_weighted_wavelength(const WavelengthSamples& samples) {
   throw Error("preintegrated tables: the wavelength samples carry no weight");
 }
 
-// The per-wavelength part of F.3 shared by every node: d_m = sum_{n >= m} A_mn C_n with
-// A_mn = C(n, m) w_c^(n-m) (i k h_s)^n / n! and C_n = sum_j e_j H_n(j) the windowed table sum.
-struct WavelengthShift {
+// The per-wavelength factors of the Taylor sum: S = sum_n w^n (i k h_s)^n / n! C_n, with
+// C_n = sum_j e_j H_n(j) the windowed table sum (eq. F.2).
+struct WavelengthPowers {
   double k = 0.0;
-  std::vector<Complex> A;  // N x N, row m, zero below the diagonal
+  std::vector<double> power;  // (k h_s)^n / n!; the factor i^n is applied as a rotation
 };
 
-WavelengthShift wavelength_shift(const SpectralTables& t, double lambda_nm, double w_centre) {
-  WavelengthShift s;
-  const int N = t.N;
+WavelengthPowers wavelength_powers(const SpectralTables& t, double lambda_nm) {
+  WavelengthPowers s;
   s.k = (2.0 * std::numbers::pi) / lambda_nm;
-  std::vector<Complex> power(N);
-  Complex p(1.0);
-  for (int n = 0; n < N; ++n) {
-    power[n] = p;
-    p *= Complex(0.0, s.k * t.hs_nm / (n + 1));
-  }
-  s.A.assign(static_cast<size_t>(N) * N, Complex(0.0));
-  for (int m = 0; m < N; ++m) {
-    double binomial_wc = 1.0;  // C(n, m) w_c^(n-m)
-    for (int n = m; n < N; ++n) {
-      s.A[m * N + n] = binomial_wc * power[n];
-      binomial_wc *= w_centre * (n + 1) / (n + 1 - m);
-    }
+  s.power.resize(t.N);
+  double p = 1.0;
+  for (int n = 0; n < t.N; ++n) {
+    s.power[n] = p;
+    p *= s.k * t.hs_nm / (n + 1);
   }
   return s;
+}
+
+// F.3 for the real polynomial |S|^2: T_q = sum_{p >= q} C(p, q) w_c^(p-q) T'_p re-expands the
+// coefficients T'_p of w^p about w_c. It is linear and the same at every wavelength, so it is
+// applied once per node to the wavelength sum (eq. F.4') instead of to every d_m of every wavelength.
+std::vector<double> recentre_matrix(int terms, double w_centre) {
+  std::vector<double> B(static_cast<size_t>(terms) * terms, 0.0);
+  for (int q = 0; q < terms; ++q) {
+    double binomial_wc = 1.0;  // C(p, q) w_c^(p-q)
+    for (int p = q; p < terms; ++p) {
+      B[q * terms + p] = binomial_wc;
+      binomial_wc *= w_centre * (p + 1) / (p + 1 - q);
+    }
+  }
+  return B;
 }
 
 // Per stored bin: whether any of its coefficients exceeds 1e-13 (the FFT's rounding) of the
@@ -71,68 +77,118 @@ std::vector<char> live_bins(const SpectralTables& t) {
   return live;
 }
 
-// Adds weight k^2 sum_{m+m'=p} Re(d_m conj d_m') to T_p (eq. F.4) at one node (u, v) for one
-// wavelength. The pairs (m, m') and (m', m) are conjugates, so their imaginary parts cancel.
-// Complex products are written out (std::complex's guard against inf/NaN costs a call each).
+// The window weights along one axis (eq. F.2's e_j separates: e_j = e_x(j_x) e_y(j_y)) for every
+// wavelength at `count` node coordinates origin + i spacing: the nearest bin j0, e(j0 + d) for
+// d = -r..r and their sum. e_x depends only on (column, wavelength) and e_y on (row, wavelength), so
+// each is computed once per column or row instead of once per node.
+struct AxisWindows {
+  int count = 0, width = 0;  // coordinates; 2r + 1
+  std::vector<int> j0;       // [wavelength * count + i]
+  std::vector<double> sum;
+  std::vector<double> e;  // [(wavelength * count + i) * width + d + r]
+
+  size_t at(size_t wavelength, int i) const { return wavelength * count + i; }
+};
+
+AxisWindows axis_windows(const SpectralTables& t, const std::vector<WavelengthPowers>& powers, int axis, double origin,
+                         double spacing, int count) {
+  AxisWindows w;
+  w.count = count;
+  w.width = 2 * t.r + 1;
+  w.j0.resize(powers.size() * count);
+  w.sum.assign(w.j0.size(), 0.0);
+  w.e.resize(w.j0.size() * w.width);
+  for (size_t l = 0; l < powers.size(); ++l)
+    for (int i = 0; i < count; ++i) {
+      const size_t at = w.at(l, i);
+      const double alpha = powers[l].k * (origin + i * spacing);
+      w.j0[at] = diffraction_nearest_bin(alpha, t.period_nm);
+      for (int d = -t.r; d <= t.r; ++d) {
+        glm::dvec2 delta(0.0);
+        delta[axis] = alpha - diffraction_bin_frequency(w.j0[at] + d, w.j0[at] + d, t.period_nm)[axis];
+        const double e = diffraction_window_weight(delta, t.sigma_nm);
+        w.e[at * w.width + d + t.r] = e;
+        w.sum[at] += e;
+      }
+    }
+  return w;
+}
+
+// Adds weight k^2 sum_{n+n'=p} Re(b_n conj b_n') to T'_p, the coefficient of w^p (eq. F.4'), at
+// one node (u, v) for one wavelength, with b_n = (i k h_s)^n / n! C_n. The pairs (n, n') and
+// (n', n) are conjugates, so their imaginary parts cancel. Complex products are written out
+// (std::complex's guard against inf/NaN costs a call each).
 class NodeIntegrator {
  public:
   explicit NodeIntegrator(const SpectralTables& t, const std::vector<char>& live)
-      : t_(t), live_(live), c_re_(t.N), c_im_(t.N), d_re_(t.N), d_im_(t.N) {}
+      : t_(t), live_(live), c_re_(t.N), c_im_(t.N), b_re_(t.N), b_im_(t.N), q_(2 * t.N - 1) {}
 
-  void add(glm::dvec2 uv, const WavelengthShift& s, glm::dvec3 weight, std::vector<glm::dvec3>& T) {
+  // Column window x at (iu, wavelength), row window y at (iv, wavelength).
+  void add(const AxisWindows& x, size_t x_at, const AxisWindows& y, size_t y_at, const WavelengthPowers& s,
+           glm::dvec3 weight, std::vector<glm::dvec3>& T) {
     const int N = t_.N, r = t_.r;
-    const glm::dvec2 alpha = s.k * uv;
-    const int jx0 = diffraction_nearest_bin(alpha.x, t_.period_nm),
-              jy0 = diffraction_nearest_bin(alpha.y, t_.period_nm);
-    // The window weight separates: e_j = e_x(j_x) e_y(j_y).
-    double ex[kMaxRadius * 2 + 1], ey[kMaxRadius * 2 + 1];
-    double sum_x = 0.0, sum_y = 0.0;
-    for (int d = -r; d <= r; ++d) {
-      const glm::dvec2 f = diffraction_bin_frequency(jx0 + d, jy0 + d, t_.period_nm);
-      ex[d + r] = diffraction_window_weight(glm::dvec2(alpha.x - f.x, 0.0), t_.sigma_nm);
-      ey[d + r] = diffraction_window_weight(glm::dvec2(0.0, alpha.y - f.y), t_.sigma_nm);
-      sum_x += ex[d + r];
-      sum_y += ey[d + r];
-    }
-    if (sum_x * sum_y < kNegligibleWindow) return;
-    std::fill(c_re_.begin(), c_re_.end(), 0.0);
-    std::fill(c_im_.begin(), c_im_.end(), 0.0);
-    bool any = false;
+    const int jx0 = x.j0[x_at], jy0 = y.j0[y_at];
+    // The live bins of the window first: most (node, wavelength) pairs of a periodic grating have none.
+    int live_count = 0;
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
-        const DiffractionTableEntry entry = diffraction_table_entry(0, jx0 + dx, jy0 + dy, t_.J, t_.stored_terms);
-        if (!entry.valid || !live_[entry.index / t_.stored_terms]) continue;
-        any = true;
-        const double e = ex[dx + r] * ey[dy + r];
-        const double sign = entry.conjugate ? -e : e;
-        const Complex* H = &t_.coefficients[entry.index];  // the N terms of one bin are contiguous
-        for (int n = 0; n < N; ++n) {
-          c_re_[n] += e * H[n].real();
-          c_im_[n] += sign * H[n].imag();
-        }
+        const DiffractionTableEntry bin = diffraction_table_entry(0, jx0 + dx, jy0 + dy, t_.J, 1);  // index: the bin
+        if (bin.valid && live_[bin.index])
+          window_[live_count++] = {dx + r, dy + r, bin.index * t_.stored_terms, bin.conjugate};
       }
-    if (!any) return;
-    for (int m = 0; m < N; ++m) {
-      double re = 0.0, im = 0.0;
-      for (int n = m; n < N; ++n) {
-        const Complex a = s.A[m * N + n];
-        re += a.real() * c_re_[n] - a.imag() * c_im_[n];
-        im += a.real() * c_im_[n] + a.imag() * c_re_[n];
+    if (live_count == 0 || x.sum[x_at] * y.sum[y_at] < kNegligibleWindow) return;
+    const double* ex = &x.e[x_at * x.width];
+    const double* ey = &y.e[y_at * y.width];
+    std::fill(c_re_.begin(), c_re_.end(), 0.0);
+    std::fill(c_im_.begin(), c_im_.end(), 0.0);
+    for (int i = 0; i < live_count; ++i) {
+      const LiveBin& bin = window_[i];
+      const double e = ex[bin.x] * ey[bin.y];
+      const double sign = bin.conjugate ? -e : e;
+      const Complex* H = &t_.coefficients[bin.index];  // the N terms of one bin are contiguous
+      for (int n = 0; n < N; ++n) {
+        c_re_[n] += e * H[n].real();
+        c_im_[n] += sign * H[n].imag();
       }
-      d_re_[m] = re;
-      d_im_[m] = im;
+    }
+    // b_n = i^n power_n C_n: i^n rotates by a quarter turn per n.
+    for (int n = 0; n < N; ++n) {
+      const double re = s.power[n] * c_re_[n], im = s.power[n] * c_im_[n];
+      switch (n & 3) {
+        case 0:
+          b_re_[n] = re, b_im_[n] = im;
+          break;
+        case 1:
+          b_re_[n] = -im, b_im_[n] = re;
+          break;
+        case 2:
+          b_re_[n] = -re, b_im_[n] = -im;
+          break;
+        default:
+          b_re_[n] = im, b_im_[n] = -re;
+          break;
+      }
+    }
+    std::fill(q_.begin(), q_.end(), 0.0);
+    for (int n = 0; n < N; ++n) {
+      q_[2 * n] += b_re_[n] * b_re_[n] + b_im_[n] * b_im_[n];
+      const double re2 = 2.0 * b_re_[n], im2 = 2.0 * b_im_[n];
+      for (int np = n + 1; np < N; ++np) q_[n + np] += re2 * b_re_[np] + im2 * b_im_[np];
     }
     const glm::dvec3 w3 = weight * (s.k * s.k);
-    for (int m = 0; m < N; ++m) {
-      T[2 * m] += w3 * (d_re_[m] * d_re_[m] + d_im_[m] * d_im_[m]);
-      for (int mp = m + 1; mp < N; ++mp) T[m + mp] += w3 * (2.0 * (d_re_[m] * d_re_[mp] + d_im_[m] * d_im_[mp]));
-    }
+    for (size_t p = 0; p < q_.size(); ++p) T[p] += w3 * q_[p];
   }
 
  private:
+  struct LiveBin {
+    int x, y;  // window position, 0..2r
+    int index;
+    bool conjugate;
+  };
   const SpectralTables& t_;
   const std::vector<char>& live_;
-  std::vector<double> c_re_, c_im_, d_re_, d_im_;
+  std::vector<double> c_re_, c_im_, b_re_, b_im_, q_;
+  LiveBin window_[(2 * kMaxRadius + 1) * (2 * kMaxRadius + 1)];
 };
 
 PreintegratedGrid kernel_grid(const PreintegratedTables& t) {
@@ -204,24 +260,29 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   t.R0 = tables.R0;
 
   if (tables.r > kMaxRadius) throw Error("preintegrated tables: the coherence window is too narrow (radius > 16 bins)");
-  std::vector<WavelengthShift> shifts;
+  std::vector<WavelengthPowers> powers;
   std::vector<glm::dvec3> weights;
   for (size_t i = 0; i < samples.lambda_nm.size(); ++i)
     if (samples.xyz_weight[i] != glm::dvec3(0.0)) {
-      shifts.push_back(wavelength_shift(tables, samples.lambda_nm[i], t.w_centre));
+      powers.push_back(wavelength_powers(tables, samples.lambda_nm[i]));
       weights.push_back(samples.xyz_weight[i]);
     }
+  const std::vector<double> recentre = recentre_matrix(t.terms, t.w_centre);
   const std::vector<char> live = live_bins(tables);
   const size_t nodes = static_cast<size_t>(t.nu) * t.nv;
   std::vector<glm::dvec3> T(nodes * t.terms, glm::dvec3(0.0));
+  const AxisWindows columns = axis_windows(tables, powers, 0, t.origin.x, t.spacing.x, t.nu);
   tbb::parallel_for(0, t.nv, [&](int iv) {
     NodeIntegrator integrator(tables, live);
+    const AxisWindows row = axis_windows(tables, powers, 1, t.origin.y + iv * t.spacing.y, 0.0, 1);
     std::vector<glm::dvec3> node(t.terms);
     for (int iu = 0; iu < t.nu; ++iu) {
-      const glm::dvec2 uv = t.origin + glm::dvec2(iu, iv) * t.spacing;
       std::fill(node.begin(), node.end(), glm::dvec3(0.0));
-      for (size_t i = 0; i < shifts.size(); ++i) integrator.add(uv, shifts[i], weights[i], node);
-      std::copy(node.begin(), node.end(), T.begin() + (static_cast<size_t>(iv) * t.nu + iu) * t.terms);
+      for (size_t i = 0; i < powers.size(); ++i)
+        integrator.add(columns, columns.at(i, iu), row, row.at(i, 0), powers[i], weights[i], node);
+      glm::dvec3* out = &T[(static_cast<size_t>(iv) * t.nu + iu) * t.terms];
+      for (int q = 0; q < t.terms; ++q)
+        for (int p = q; p < t.terms; ++p) out[q] += recentre[q * t.terms + p] * node[p];
     }
   });
 

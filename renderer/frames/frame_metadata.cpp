@@ -64,6 +64,11 @@ void add_diffraction_metadata(ExrMetadata& metadata, const gpu::DiffractionBuffe
   metadata["facet:taylor_terms"] = std::int64_t{diffraction.most_taylor};
 }
 
+void add_table_cache_metadata(ExrMetadata& metadata, const gpu::DiffractionBuffers& diffraction) {
+  if (diffraction.most_wavelengths > 0 && diffraction.method == diffraction::DiffractionMethod::Preintegrated)
+    metadata["facet:table_cache"] = std::string(diffraction::table_cache_use_name(diffraction.table_cache));
+}
+
 void add_frame_number(ExrMetadata& metadata, int frame) {
   if (frame >= 0) metadata["facet:frame"] = static_cast<std::int64_t>(frame);
 }

@@ -38,6 +38,10 @@ void add_reference_metadata(ExrMetadata& metadata, const ReferenceMethod& refere
 // facet:diffraction_method, facet:wavelengths, facet:taylor_terms, when the pass has diffraction materials.
 void add_diffraction_metadata(ExrMetadata& metadata, const gpu::DiffractionBuffers& diffraction);
 
+// facet:table_cache (hit, miss, off: where the `preintegrated` tables came from), with the timings: like
+// them it changes between runs of the same frame.
+void add_table_cache_metadata(ExrMetadata& metadata, const gpu::DiffractionBuffers& diffraction);
+
 // facet:frame, for a frame of the scene's camera_path (nothing for -1, the still camera).
 void add_frame_number(ExrMetadata& metadata, int frame);
 

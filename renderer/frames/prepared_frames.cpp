@@ -45,6 +45,7 @@ Frame PreparedFrames::render(const Camera& camera, int width, int height, const 
   frame.metadata = metadata();
   add_standard_attributes(frame.metadata, camera, width, height, samples_per_pixel());
   if (request.timings) add_timings(frame.metadata, pass_ ? std::optional(frame.gpu_ms) : std::nullopt, frame.wall_ms);
+  if (request.timings && pass_) add_table_cache_metadata(frame.metadata, pass_->diffraction());
   add_frame_number(frame.metadata, request.frame);
   return frame;
 }

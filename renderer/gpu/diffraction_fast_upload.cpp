@@ -30,10 +30,12 @@ DiffractionMethod scene_diffraction_method(const Scene& scene, const diffraction
   return chosen.value_or(DiffractionMethod::Spectral);
 }
 
-void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
-                       std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
-                       DiffractionMethod method, std::uint64_t max_bytes) {
+diffraction::TableCacheUse append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
+                                             std::uint32_t scene_material,
+                                             const diffraction::PreparedDiffraction& prepared, DiffractionMethod method,
+                                             std::uint64_t max_bytes, const std::filesystem::path& table_cache) {
   const auto& source = std::get<DiffractionMaterial>(scene.materials[scene_material]);
+  diffraction::TableCacheUse use = diffraction::TableCacheUse::Off;
   if (method == DiffractionMethod::Preintegrated) {
     const std::uint64_t used = data.preintegrated_words.size() * sizeof(std::uint32_t);
     diffraction::PreintegrationSettings settings;
@@ -41,8 +43,10 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
     settings.max_bytes = max_bytes > used ? max_bytes - used : 0;
     diffraction::PreintegratedTables t;
     try {
-      t = diffraction::build_preintegrated_tables(prepared.tables, prepared.samples,
-                                                  diffraction_view_domain(scene, scene_material), settings);
+      auto cached = diffraction::cached_preintegrated_tables(table_cache, prepared.tables, prepared.samples,
+                                                             diffraction_view_domain(scene, scene_material), settings);
+      t = std::move(cached.tables);
+      use = cached.use;
     } catch (const Error& e) {
       throw Error("diffraction material '" + scene.material_names[scene_material] + "': " + e.what());
     }
@@ -59,7 +63,7 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
   if (method == DiffractionMethod::Orders) {
     const diffraction::OrderWavelengths plan = diffraction::plan_order_wavelengths(
         *source.grating, prepared.tables, source.tolerance, source.illuminant, prepared.samples);
-    if (!plan.restricted) return;  // fast_scalars.z = 0: the pass runs the spectral path
+    if (!plan.restricted) return use;  // fast_scalars.z = 0: the pass runs the spectral path
     const long iterations = order_loop_iterations(plan, prepared.tables);
     if (iterations + kTraceLoopReserve > kLoopIterationLimit)
       throw Error("diffraction material '" + scene.material_names[scene_material] + "': the orders path may need " +
@@ -76,6 +80,7 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
     material.fast_scalars.z = 1.0f;
     for (const glm::dvec3& o : plan.observer) data.observer.emplace_back(glm::vec3(o), 0.0f);
   }
+  return use;
 }
 
 }  // namespace facet::gpu

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "diffraction/preintegrated_cache.hpp"
 #include "diffraction/prepared_diffraction.hpp"
 #include "gpu/diffraction_layout.hpp"
 #include "scene/scene.hpp"
@@ -35,9 +37,12 @@ struct FastPathData {
 // Fills material's preintegrated_* / order_* / fast_* fields for `method` (the others stay zero)
 // and appends its tables to `data`. The preintegrated tables are refused (facet::Error, one line
 // with the sizes) when `data` would exceed max_bytes of device memory; a grating that is not periodic gets
-// periodic = 0, and the pass then runs the spectral path for it under `orders`.
-void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
-                       std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
-                       diffraction::DiffractionMethod method, std::uint64_t max_bytes);
+// periodic = 0, and the pass then runs the spectral path for it under `orders`. The tables are read
+// from and kept in `table_cache` (empty: none); the result says whether they came from it.
+diffraction::TableCacheUse append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
+                                             std::uint32_t scene_material,
+                                             const diffraction::PreparedDiffraction& prepared,
+                                             diffraction::DiffractionMethod method, std::uint64_t max_bytes,
+                                             const std::filesystem::path& table_cache);
 
 }  // namespace facet::gpu

@@ -51,6 +51,8 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
                               sizeof(std::uint32_t) * binding_words * FACET_RENDER_PREINTEGRATED_SLICES);
   const diffraction::DiffractionMethod method = scene_diffraction_method(scene, settings);
   const auto all = diffraction::prepare_scene_diffraction(scene, settings);
+  const std::filesystem::path table_cache = diffraction::table_cache_dir();
+  diffraction::TableCacheUse cache_use = diffraction::TableCacheUse::Off;
   for (size_t i = 0; i < all.size(); ++i) {
     const auto& prepared = all[i];
     if (!prepared) continue;
@@ -67,7 +69,9 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
     GpuDiffractionMaterial entry{};  // the fast paths' fields stay zero unless their method fills them
     entry.table = table_info(prepared->tables);
     entry.offsets = glm::uvec4(coefficients.size(), wavelengths.size(), s.lambda_nm.size(), 0);
-    append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method, table_memory);
+    const diffraction::TableCacheUse use =
+        append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method, table_memory, table_cache);
+    if (use == diffraction::TableCacheUse::Miss || cache_use == diffraction::TableCacheUse::Off) cache_use = use;
     materials.push_back(entry);
     most_wavelengths = std::max(most_wavelengths, static_cast<int>(s.lambda_nm.size()));
     most_taylor = std::max(most_taylor, prepared->tables.N);
@@ -93,7 +97,8 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
                              vk::Buffer::from(context, std::span<const glm::vec4>(fast.observer)),
                              method,
                              most_wavelengths,
-                             most_taylor};
+                             most_taylor,
+                             cache_use};
   const std::span<const uint32_t> words(fast.preintegrated_words);
   for (const auto& [begin, end] : buffers.preintegrated_slices.ranges)
     buffers.preintegrated_words.push_back(vk::Buffer::from(context, words.subspan(begin, end - begin)));

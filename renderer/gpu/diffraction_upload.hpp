@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "diffraction/order_wavelengths.hpp"
+#include "diffraction/preintegrated_cache.hpp"
 #include "diffraction/prepared_diffraction.hpp"
 #include "gpu/preintegrated_slices.hpp"
 #include "scene/scene.hpp"
@@ -27,6 +28,8 @@ struct DiffractionBuffers {
   diffraction::DiffractionMethod method = diffraction::DiffractionMethod::Spectral;  // kDiffractionMethod
   int most_wavelengths = 0;  // the most wavelength samples / Taylor terms of any material (metadata)
   int most_taylor = 0;
+  // `preintegrated`: Hit when every material's tables came from the cache, Miss when any was built.
+  diffraction::TableCacheUse table_cache = diffraction::TableCacheUse::Off;
 };
 
 // Lavapipe stops every loop of a shader invocation, silently, once all its loops together have run

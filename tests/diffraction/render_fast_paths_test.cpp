@@ -94,7 +94,9 @@ TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine
   gpu::FastPathData data;
   gpu::GpuDiffractionMaterial entry{};
   try {
-    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096);
+    gpu::append_fast_paths(
+        data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096,
+        std::filesystem::path(FACET_BINARY_DIR) / "refused_tables_cache");  // refused before any lookup
     FAIL() << "4 KiB of tables accepted";
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -121,7 +123,7 @@ TEST(DiffractionFastPathsRender, OrdersBeyondTheLoopLimitAreRefusedWithOneLine) 
   gpu::FastPathData data;
   gpu::GpuDiffractionMaterial entry{};
   try {
-    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Orders, 1u << 30);
+    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Orders, 1u << 30, {});
     FAIL() << "orders accepted";
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -161,6 +163,42 @@ TEST(DiffractionFastPathsRender, CliFlagsPickTheMethodAndGoIntoTheMetadata) {
   EXPECT_EQ(r.err.rfind("facet: error: ", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// The preintegrated tables kept across runs (docs/diffraction_fast_paths.md, "Table cache"): the first
+// render builds and stores them, the second reads them, a torn file is rebuilt, and the frames from
+// cached and rebuilt tables equal the first, pixel for pixel (changed inputs: PreintegratedCache tests).
+TEST(DiffractionFastPathsRender, SecondRenderReadsTheTablesFromTheCache) {
+  const std::filesystem::path dir = std::filesystem::path(FACET_BINARY_DIR) / "render_fast_paths_table_cache";
+  std::filesystem::remove_all(dir);
+  const std::filesystem::path out = dir / "frame.exr";
+  // A wider coherence window than the scene's keeps the tables small (nodes grow as sigma^2).
+  auto render = [&](const std::string& cache) {
+    const auto r =
+        test::run_command("FACET_CACHE_DIR='" + cache + "' " + std::string(FACET_EXECUTABLE) + " render " +
+                          kPlate.string() + " --width 24 --height 24 --diffraction preintegrated " +
+                          "--set camera.fov_y=30 --set materials.grating.grating.coherence_um=2 -o " + out.string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    ExrMetadata metadata;
+    Image image = read_exr(out, &metadata);
+    return std::pair(std::move(image), std::get<std::string>(metadata.at("facet:table_cache")));
+  };
+  auto expect_equal = [](const Image& a, const Image& b) {
+    ASSERT_EQ(a.pixel_count(), b.pixel_count());
+    for (size_t i = 0; i < a.pixel_count(); ++i) ASSERT_EQ(a.at(i), b.at(i)) << "pixel " << i;
+  };
+  const std::string cache = (dir / "cache").string();
+  const auto [built, miss] = render(cache);  // as without a cache (PreintegratedCache tests: "off")
+  EXPECT_EQ(miss, "miss");
+  const auto [cached, hit] = render(cache);
+  EXPECT_EQ(hit, "hit");
+  expect_equal(cached, built);
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(cache))
+    if (entry.is_regular_file()) std::filesystem::resize_file(entry.path(), entry.file_size() / 2);  // torn files
+  const auto [rebuilt, again] = render(cache);
+  EXPECT_EQ(again, "miss");
+  expect_equal(rebuilt, built);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
