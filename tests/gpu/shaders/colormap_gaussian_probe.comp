@@ -1,14 +1,15 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Test probe of render/texture_sampling.glsl: colormap_gaussian(map, mu, sigma) of the direct pass,
-// with the scene's buffers at their slots (layout/render_layout.glsl), for records (mu, sigma, colour
-// map index, -) at the first slot after them, each replaced by (rgb, -). kTextureMethod selects
-// filtered (3) or filtered:table (4).
+// or with what = 1 the spread of the mapped colour around it (colormap_spread, the error estimate's
+// eq. 2), with the scene's buffers at their slots (layout/render_layout.glsl), for records (mu, sigma,
+// colour map index, what) at the first slot after them, each replaced by (rgb, -). kTextureMethod
+// selects filtered (3) or filtered:table (4).
 #include "layout/render_layout.glsl"
 
 layout(local_size_x = 64) in;
 layout(constant_id = FACET_RENDER_SPEC_TEXTURE_METHOD) const uint kTextureMethod = 4u;
-const bool kWritesAovs = false;  // texture_sampling.glsl's error estimate is not probed here
+const bool kWritesAovs = false;  // texture_sampling.glsl's own use of the spread is not probed here
 
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
@@ -19,5 +20,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= uint(probes.length())) return;
   vec4 q = probes[i];
-  probes[i] = vec4(colormap_gaussian(colormap_record(uint(q.z)), q.x, q.y), 0.0);
+  GpuColormap map = colormap_record(uint(q.z));
+  vec3 mean = colormap_gaussian(map, q.x, q.y);
+  probes[i] = vec4(q.w == 1.0 ? colormap_spread(map, q.x, q.y, mean) : mean, 0.0);
 }
