@@ -164,7 +164,7 @@ Image render_reference(const Scene& scene, const ReferenceOptions& options) {
         "--aov error: the reference writes no error estimate (it is the truth the estimate is checked against)");
   Image image(options.width, options.height);
   image.alpha.resize(image.pixel_count());
-  add_aov_channels(image, options.aovs);
+  const std::size_t first_aov = add_aov_channels(image, options.aovs);
   std::mutex progress_mutex;
   std::int64_t done = 0;
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
@@ -180,7 +180,7 @@ Image render_reference(const Scene& scene, const ReferenceOptions& options) {
                 const glm::dvec4 pixel = integrator.pixel(x, y, aov);
                 image.set(x, y, glm::vec3(pixel));
                 image.alpha[image.index(x, y)] = static_cast<float>(pixel.a);
-                set_aov_pixel(image, options.aovs, image.index(x, y), aov);
+                set_aov_pixel(image, options.aovs, first_aov, image.index(x, y), aov);
               }
             if (options.progress) {
               const std::lock_guard lock(progress_mutex);

@@ -198,8 +198,10 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
       if (progress) progress(local.tiles, tiles);
     }
   if (aovs_.error) add_edge_error(image, aovs, k);
-  if (aovs_.any()) add_aov_channels(image, aovs_);
-  for (size_t i = 0; i < aovs.size(); ++i) set_aov_pixel(image, aovs_, i, aovs[i]);
+  if (aovs_.any()) {
+    const size_t first = add_aov_channels(image, aovs_);
+    for (size_t i = 0; i < aovs.size(); ++i) set_aov_pixel(image, aovs_, first, i, aovs[i]);
+  }
   if (stats) *stats = local;
   return image;
 }

@@ -39,13 +39,15 @@ std::vector<std::string> aov_channel_names(const AovSet& aovs) {
   return names;
 }
 
-void add_aov_channels(Image& image, const AovSet& aovs) {
+std::size_t add_aov_channels(Image& image, const AovSet& aovs) {
+  const std::size_t first = image.channels.size();
   for (const std::string& name : aov_channel_names(aovs))
     image.channels.push_back({name, std::vector<float>(image.pixel_count(), 0.0f)});
+  return first;
 }
 
-void set_aov_pixel(Image& image, const AovSet& aovs, std::size_t pixel, const AovPixel& values) {
-  std::size_t c = image.channels.size() - aov_channel_names(aovs).size();
+void set_aov_pixel(Image& image, const AovSet& aovs, std::size_t first, std::size_t pixel, const AovPixel& values) {
+  std::size_t c = first;
   auto put = [&](float v) { image.channels[c++].values[pixel] = v; };
   if (aovs.depth) put(values.depth);
   if (aovs.normal) {

@@ -39,10 +39,10 @@ struct AovPixel {
   float error = 0.0f;
 };
 
-// Appends the channels of `aovs` to image.channels, zero-filled.
-void add_aov_channels(Image& image, const AovSet& aovs);
+// Appends the channels of `aovs` to image.channels, zero-filled; returns the index of the first.
+std::size_t add_aov_channels(Image& image, const AovSet& aovs);
 
-// Sets pixel `pixel` of the channels add_aov_channels appended (the image's last ones).
-void set_aov_pixel(Image& image, const AovSet& aovs, std::size_t pixel, const AovPixel& values);
+// Sets pixel `pixel` of the channels add_aov_channels appended from index `first`.
+void set_aov_pixel(Image& image, const AovSet& aovs, std::size_t first, std::size_t pixel, const AovPixel& values);
 
 }  // namespace facet
