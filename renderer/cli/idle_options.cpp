@@ -9,7 +9,9 @@ std::vector<std::string> idle_option_warnings(const Scene& scene, const gpu::Ren
   const report::SceneFeatures features = report::scene_features(scene);
   const std::string source = scene.source.string();
   std::vector<std::string> warnings;
-  if (method.texture != gpu::RenderMethod::Texture::Naive && !features.colormap_texture && !features.microsurface) {
+  // filtered:adaptive still refines geometric edges there (the error estimate's edge term).
+  if (method.texture != gpu::RenderMethod::Texture::Naive && method.adaptive_samples_per_axis == 0 &&
+      !features.colormap_texture && !features.microsurface) {
     const std::string strata = method.samples_per_axis > 1 ? "ss:" + std::to_string(method.samples_per_axis) : "naive";
     warnings.push_back("facet: warning: " + source + " has no colormap_texture or microsurface material: --method " +
                        method.name() + " renders it as " + strata);

@@ -35,6 +35,7 @@ struct RenderOptions {
   int taylor = 0;
   bool timings = false;  // --timings: print the phases
   std::string aov;       // --aov: comma list of auxiliary channels
+  gpu::AdaptiveBudget adaptive;  // --adaptive-error, --adaptive-time
 };
 
 // --diffraction, --wavelengths and --taylor on top of --method (they win over a diffraction:M method).
@@ -50,6 +51,9 @@ gpu::RenderMethod render_method(const RenderOptions& options) {
   method.aovs = parse_aovs(options.aov);
   if (method.aovs.error && method.texture != gpu::RenderMethod::Texture::Filtered)
     throw Error("--aov error: only --method filtered (or filtered:ss:K) estimates its error, not " + method.name());
+  if ((options.adaptive.error || options.adaptive.time_ms) && method.adaptive_samples_per_axis == 0)
+    throw Error("--adaptive-error and --adaptive-time budget --method filtered:adaptive, not " + method.name());
+  method.adaptive = options.adaptive;
   return method;
 }
 
@@ -114,8 +118,19 @@ void add_render_command(CLI::App& app, Action& action) {
   command
       ->add_option("--method", options->method,
                    "How sub-pixel detail becomes a pixel: naive, mip, colormip, ss:K (K x K rays), filtered, "
-                   "filtered:table; M:ss:K runs footprint method M per stratum of ss:K (filtered:ss:2)")
+                   "filtered:table; M:ss:K runs footprint method M per stratum of ss:K (filtered:ss:2); "
+                   "filtered:adaptive[:K] adds K x K strata (K = 4) where filtered's estimated error is largest")
       ->capture_default_str();
+  command
+      ->add_option("--adaptive-error", options->adaptive.error,
+                   "filtered:adaptive refines every pixel whose estimated error (the error AOV) exceeds this "
+                   "(default: the 2/K^2 of the pixels with the largest estimate)")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--adaptive-time", options->adaptive.time_ms,
+                   "filtered:adaptive refines, largest estimated error first, until the frame has taken this many "
+                   "ms of device time (the image then depends on the host's speed)")
+      ->check(CLI::PositiveNumber);
   command->add_option("--diffraction", options->diffraction,
                       "How diffraction materials become colours: spectral, preintegrated or orders (default: each "
                       "material's \"method\")");

@@ -39,27 +39,28 @@ PreparedFrames::PreparedFrames(const Scene& scene, FrameMethod method, vk::Conte
 Frame PreparedFrames::render(const Camera& camera, int width, int height, const FrameRequest& request) {
   const auto start = request.since.value_or(std::chrono::steady_clock::now());
   Frame frame;
-  frame.image = pass_ ? render_gpu(camera, width, height, request, frame.gpu_ms)
-                      : render_reference(camera, width, height, request);
+  gpu::RenderStats stats;
+  frame.image = pass_ ? render_gpu(camera, width, height, request, stats) : render_reference(camera, width, height, request);
+  frame.gpu_ms = stats.gpu_ms;
   frame.wall_ms = ms_since(start);
   frame.metadata = metadata();
   add_standard_attributes(frame.metadata, camera, width, height, samples_per_pixel());
   if (request.timings) add_timings(frame.metadata, pass_ ? std::optional(frame.gpu_ms) : std::nullopt, frame.wall_ms);
   if (request.timings && pass_) add_table_cache_metadata(frame.metadata, pass_->diffraction());
   add_frame_number(frame.metadata, request.frame);
+  if (const auto* gpu_method = std::get_if<gpu::RenderMethod>(&method_); gpu_method && gpu_method->adaptive_samples_per_axis)
+    frame.metadata["facet:refined_pixels"] = static_cast<std::int64_t>(stats.refined_pixels);
   return frame;
 }
 
 Image PreparedFrames::render_gpu(const Camera& camera, int width, int height, const FrameRequest& request,
-                                 double& gpu_ms) {
-  gpu::RenderStats stats;
+                                 gpu::RenderStats& stats) {
   gpu::TileProgress progress;
   if (request.progress) progress = [&](int done, int total) { request.progress(done, total); };
   Image image = pass_->render(camera, width, height, &stats, progress);
   const std::uint32_t messages = context_->validation_message_count() - validation_messages_;
   validation_messages_ = context_->validation_message_count();
   if (messages > 0) throw Error("Vulkan validation reported " + counted(messages, "message") + "; no image written");
-  gpu_ms = stats.gpu_ms;
   return image;
 }
 

@@ -57,7 +57,7 @@ class PreparedFrames {
   const PhaseTimings& preparation() const { return preparation_; }
 
  private:
-  Image render_gpu(const Camera& camera, int width, int height, const FrameRequest& request, double& gpu_ms);
+  Image render_gpu(const Camera& camera, int width, int height, const FrameRequest& request, gpu::RenderStats& stats);
   Image render_reference(const Camera& camera, int width, int height, const FrameRequest& request) const;
   ExrMetadata metadata() const;  // the facet:* attributes of the method
   std::int64_t samples_per_pixel() const;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "gpu/adaptive_refinement.hpp"
 #include "gpu/microsurface_upload.hpp"
 #include "gpu/render_layout.hpp"
 #include "gpu/workgroup_order.hpp"
@@ -59,6 +60,9 @@ void check_height_field_tracing(const Scene& scene, const RenderMethod& method) 
                 " (use coarser texels, a smaller rectangle or --method mip)");
 }
 
+// Whether the pass accumulates the auxiliary values: asked for, or filtered:adaptive's error estimate.
+bool writes_aovs(const RenderMethod& method) { return method.aovs.any() || method.adaptive_samples_per_axis > 0; }
+
 // The specialization constants of the pass by their names in the shaders: what the scene uses, how
 // the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
@@ -74,7 +78,7 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_HAS_TRIANGLES, scene.meshes.empty() ? 0u : 1u},
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICES, diffraction.preintegrated_slices.count},
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS, diffraction.preintegrated_slices.slice_words},
-      {FACET_RENDER_SPEC_AOVS, method.aovs.any() ? 1u : 0u},
+      {FACET_RENDER_SPEC_AOVS, writes_aovs(method) ? 1u : 0u},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};
@@ -90,7 +94,7 @@ std::vector<vk::BufferKind> binding_kinds() {
 
 // The vec4s per pixel of the pixel buffer: the colour and coverage, then, with auxiliary outputs, two
 // planes of their sums over the strata (render/direct_pass.glsl).
-uint64_t pixel_vec4s(const AovSet& aovs) { return aovs.any() ? 3 : 1; }
+uint64_t pixel_vec4s(bool writes_aovs) { return writes_aovs ? 3 : 1; }
 
 // One pixel's auxiliary outputs from their sums over k^2 strata, `hits` of which hit geometry:
 // depth, normal and uv are means over the hits (the normal renormalised), the error over all strata.
@@ -118,10 +122,15 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
       samples_per_axis_(method.samples_per_axis),
       aovs_(method.aovs),
+      adaptive_samples_per_axis_(method.adaptive_samples_per_axis),
+      adaptive_budget_(method.adaptive),
+      writes_aovs_(writes_aovs(method)),
       buffers_(timed(timings, "upload",
                      [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
       diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
-      pixels_(context, sizeof(vec4) * pixel_vec4s(method.aovs) * static_cast<uint64_t>(tile_size) * tile_size),
+      pixels_(context, sizeof(vec4) * pixel_vec4s(writes_aovs_) * static_cast<uint64_t>(tile_size) * tile_size),
+      pixel_list_(vk::Buffer::from(context, std::span<const glm::uvec2>(std::vector<glm::uvec2>(
+                                                method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)))),
       kernel_(timed(timings, "pipeline", [&] {
         return vk::Kernel(context, {.name = "render_direct",
                                     .spirv = direct_pass_program(scene, method),
@@ -146,8 +155,60 @@ double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, in
   const uint32_t blocks = groups.x * groups.y;
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const int k = samples_per_axis_;
-  const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread};
+  const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread, uvec4(0)};
   return kernel_.dispatch(bindings, &tile, groups);
+}
+
+double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum) {
+  constexpr uint32_t kGroup = FACET_RENDER_WORKGROUP * FACET_RENDER_WORKGROUP;
+  const uint32_t blocks = static_cast<uint32_t>((count + kGroup - 1) / kGroup);
+  const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
+  const int k = adaptive_samples_per_axis_;
+  const auto n = static_cast<uint32_t>(count);
+  const GpuTile tile{uvec4(0, 0, n, 1), uvec4(stratum % k, stratum / k, stratum, k), spread, uvec4(n, 0, 0, 0)};
+  return kernel_.dispatch(bindings, &tile, glm::uvec3(blocks, 1, 1));
+}
+
+void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
+                        std::span<const float> texture_error, RenderStats& stats) {
+  std::vector<float> estimates(aovs.size());
+  for (size_t i = 0; i < aovs.size(); ++i) estimates[i] = aovs[i].error;
+  const int k = adaptive_samples_per_axis_;
+  const std::vector<uint32_t> ranked = ranked_pixels_to_refine(estimates, adaptive_budget_, k);
+  // Until measured, a refined pixel is taken to cost K^2 first-pass pixels.
+  double ms_per_pixel = stats.gpu_ms / static_cast<double>(aovs.size()) * k * k, refine_ms = 0.0;
+  const size_t chunk_limit = static_cast<size_t>(tile_size_) * tile_size_;
+  std::vector<vec4> sums(3 * chunk_limit);
+  size_t done = 0;
+  while (done < ranked.size()) {
+    size_t count = std::min(ranked.size() - done, chunk_limit);
+    if (adaptive_budget_.time_ms)
+      count = pixels_within_time(*adaptive_budget_.time_ms - stats.gpu_ms - refine_ms, ms_per_pixel, count);
+    if (count == 0) break;
+    // In frame order, so that neighbouring lanes trace neighbouring pixels.
+    std::vector<uint32_t> chunk(ranked.begin() + done, ranked.begin() + done + count);
+    std::ranges::sort(chunk);
+    std::vector<glm::uvec2> positions(count);
+    for (size_t j = 0; j < count; ++j)
+      positions[j] = glm::uvec2(chunk[j] % static_cast<uint32_t>(image.width), chunk[j] / static_cast<uint32_t>(image.width));
+    pixel_list_.upload(positions.data(), sizeof(glm::uvec2) * count);
+    for (int s = 0; s < k * k; ++s) refine_ms += dispatch_list(bindings, count, s);
+    pixels_.download(sums.data(), sizeof(vec4) * 3 * count);
+    for (size_t j = 0; j < count; ++j) {
+      const uint32_t at = chunk[j];
+      const vec4 pixel = sums[j];
+      // The edge term of the first pass, over K (eq. 3), on top of the strata's own texture term.
+      const float edge = aovs[at].error - texture_error[at];
+      image.set(at, glm::vec3(pixel));
+      image.alpha[at] = pixel.a;
+      aovs[at] = aov_pixel(sums[count + j], sums[2 * count + j], std::round(pixel.a * float(k * k)), k);
+      aovs[at].error += edge / static_cast<float>(k);
+    }
+    done += count;
+    ms_per_pixel = refine_ms / static_cast<double>(done);
+  }
+  stats.gpu_ms += refine_ms;
+  stats.refined_pixels = done;
 }
 
 std::vector<const vk::Buffer*> DirectPass::bindings() const {
@@ -162,6 +223,7 @@ std::vector<const vk::Buffer*> DirectPass::bindings() const {
   slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_3] = &diffraction_.preintegrated_words[3];
   slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_SCALES] = &diffraction_.preintegrated_scales;
   slots[FACET_RENDER_BINDING_DIFFRACTION_OBSERVER] = &diffraction_.observer;
+  slots[FACET_RENDER_BINDING_PIXEL_LIST] = &pixel_list_;
   return slots;
 }
 
@@ -173,9 +235,9 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   Image image(width, height);
   image.alpha.resize(image.pixel_count());
   const int k = samples_per_axis_;
-  const uint64_t planes = pixel_vec4s(aovs_);
+  const uint64_t planes = pixel_vec4s(writes_aovs_);
   std::vector<vec4> tile_pixels(planes * tile_size_ * tile_size_);  // rgba (a: coverage), then the AOV sums
-  std::vector<AovPixel> aovs(aovs_.any() ? image.pixel_count() : 0);
+  std::vector<AovPixel> aovs(writes_aovs_ ? image.pixel_count() : 0);
   RenderStats local;
   const int tiles = tile_count(width, height, tile_size_);
   for (int y0 = 0; y0 < height; y0 += tile_size_)
@@ -191,13 +253,20 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
           const vec4 pixel = tile_pixels[i];
           image.set(at, glm::vec3(pixel));
           image.alpha[at] = pixel.a;
-          if (aovs_.any())
+          if (writes_aovs_)
             aovs[at] = aov_pixel(tile_pixels[n + i], tile_pixels[2 * n + i], std::round(pixel.a * float(k * k)), k);
         }
       ++local.tiles;
       if (progress) progress(local.tiles, tiles);
     }
-  if (aovs_.error) add_edge_error(image, aovs, k);
+  if (adaptive_samples_per_axis_ > 0) {
+    std::vector<float> texture_error(aovs.size());
+    for (size_t i = 0; i < aovs.size(); ++i) texture_error[i] = aovs[i].error;
+    add_edge_error(image, aovs, k);
+    refine(bindings, image, aovs, texture_error, local);
+  } else if (aovs_.error) {
+    add_edge_error(image, aovs, k);
+  }
   if (aovs_.any()) {
     const size_t first = add_aov_channels(image, aovs_);
     for (size_t i = 0; i < aovs.size(); ++i) set_aov_pixel(image, aovs_, first, i, aovs[i]);

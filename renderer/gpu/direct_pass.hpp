@@ -2,8 +2,10 @@
 // the directional light (with a shadow ray) plus the ambient fill.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <span>
+#include <vector>
 
 #include "common/phase_timings.hpp"
 #include "gpu/diffraction_upload.hpp"
@@ -20,6 +22,7 @@ namespace facet::gpu {
 struct RenderStats {
   double gpu_ms = 0.0;  // sum of the tiles' GPU timestamps
   int tiles = 0;
+  std::size_t refined_pixels = 0;  // filtered:adaptive: the pixels rendered again with K x K strata
 };
 
 constexpr int kDefaultTileSize = 256;
@@ -53,14 +56,25 @@ class DirectPass {
   std::vector<const vk::Buffer*> bindings() const;  // scene buffers, pixels, diffraction buffers
   // Renders stratum `stratum` of ss:K into pixels_ for the tile's w x h pixels at (x0, y0); its device ms.
   double dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h, int stratum);
+  // Renders stratum `stratum` of K x K (K = adaptive_samples_per_axis_) into pixels_ for the first
+  // `count` pixels of pixel_list_; its device ms.
+  double dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum);
+  // filtered:adaptive: renders the pixels with the largest estimated error (aovs[i].error) again with
+  // K x K strata, within the budget, into `image` and `aovs`; `stats` holds the first pass's time.
+  void refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
+              std::span<const float> texture_error, RenderStats& stats);
 
   const Scene* scene_;
   int tile_size_;
   int samples_per_axis_;  // ss:K: K^2 dispatches per tile
   AovSet aovs_;           // the auxiliary channels each frame carries
+  int adaptive_samples_per_axis_;  // filtered:adaptive's K (0: not adaptive)
+  AdaptiveBudget adaptive_budget_;
+  bool writes_aovs_;      // the pass accumulates the auxiliary values (asked for, or filtered:adaptive's estimate)
   SceneBuffers buffers_;
   DiffractionBuffers diffraction_;
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range
+  vk::Buffer pixel_list_;  // filtered:adaptive: up to a tile's worth of frame positions to refine
   vk::Kernel kernel_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <optional>
+#include <string_view>
 
 #include "common/error.hpp"
 
@@ -9,6 +10,8 @@ namespace facet::gpu {
 
 namespace {
 constexpr int kMaxSamplesPerAxis = 16;
+constexpr int kDefaultAdaptiveSamplesPerAxis = 4;
+constexpr std::string_view kAdaptive = "filtered:adaptive";
 
 // K of "ss:K" in `count` (the text after "ss:"), or 0 if it is not an integer in [1, kMaxSamplesPerAxis].
 int parse_samples_per_axis(const std::string& count) {
@@ -42,6 +45,15 @@ std::string samples_error(const std::string& text) {
 RenderMethod RenderMethod::parse(const std::string& text) {
   if (text == "naive") return {};
   if (auto texture = parse_footprint_method(text)) return {*texture, 1};
+  if (text.starts_with(kAdaptive)) {
+    RenderMethod method{Texture::Filtered, 1};
+    const std::string_view rest = std::string_view(text).substr(kAdaptive.size());
+    if (rest.empty()) method.adaptive_samples_per_axis = kDefaultAdaptiveSamplesPerAxis;
+    else if (rest.starts_with(':')) method.adaptive_samples_per_axis = parse_samples_per_axis(std::string(rest.substr(1)));
+    if (method.adaptive_samples_per_axis >= 2) return method;
+    throw Error("--method " + text + ": K of filtered:adaptive:K must be an integer in [2, " +
+                std::to_string(kMaxSamplesPerAxis) + "]");
+  }
   // A footprint method per stratum: each of the K x K rays filters its own stratum's footprint.
   if (const auto at = text.find(":ss:"); at != std::string::npos) {
     if (auto texture = parse_footprint_method(text.substr(0, at))) {
@@ -61,12 +73,18 @@ RenderMethod RenderMethod::parse(const std::string& text) {
   }
   throw Error("--method " + text +
               ": must be one of naive, mip, colormip, ss:K, filtered, filtered:table (the last four also as M:ss:K), "
-              "diffraction:spectral, diffraction:preintegrated, diffraction:orders");
+              "filtered:adaptive[:K], diffraction:spectral, diffraction:preintegrated, diffraction:orders");
 }
 
 std::string RenderMethod::name() const {
   if (diffraction.method && texture == Texture::Naive && samples_per_axis == 1)
     return std::string("diffraction:") + diffraction::diffraction_method_name(*diffraction.method);
+  if (adaptive_samples_per_axis > 0) {
+    std::string name(kAdaptive);
+    if (adaptive_samples_per_axis != kDefaultAdaptiveSamplesPerAxis)
+      name.append(":").append(std::to_string(adaptive_samples_per_axis));
+    return name;
+  }
   const std::string strata = samples_per_axis > 1 ? "ss:" + std::to_string(samples_per_axis) : "";
   for (const FootprintMethodName& m : kFootprintMethods)
     if (m.texture == texture) return strata.empty() ? m.name : m.name + (":" + strata);

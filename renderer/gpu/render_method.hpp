@@ -7,10 +7,13 @@
 //   filtered:table   the same Gaussian looked up in the colour map's prefiltered table T(mu, sigma)
 //   M:ss:K     footprint method M (mip, colormip, filtered, filtered:table) per stratum of ss:K, each
 //              ray with its stratum's footprint: the strata resolve geometric edges, M the detail within
+//   filtered:adaptive[:K]   filtered, then filtered:ss:K (K = 4 unless given) again on the pixels whose
+//              estimated error (docs/error_estimate.md) is largest, within a budget (AdaptiveBudget)
 //   diffraction:M    `naive`, with every diffraction material rendered by method M (spectral,
 //                    preintegrated, orders; scene/grating/diffraction_method.hpp)
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "diffraction/prepared_diffraction.hpp"
@@ -18,12 +21,23 @@
 
 namespace facet::gpu {
 
+// How many pixels filtered:adaptive refines, most estimated error first: those whose estimate exceeds
+// `error`, until the frame's device time reaches `time_ms`; with neither, the top 2 / K^2 of the
+// pixels (two more rays per pixel on average). Only the time budget makes frames depend on the host.
+struct AdaptiveBudget {
+  std::optional<double> error;
+  std::optional<double> time_ms;
+  bool operator==(const AdaptiveBudget&) const = default;
+};
+
 struct RenderMethod {
   enum class Texture { Naive = 0, Mip = 1, Colormip = 2, Filtered = 3, FilteredTable = 4 };
   Texture texture = Texture::Naive;
   int samples_per_axis = 1;
   diffraction::DiffractionSettings diffraction{};  // wavelength / Taylor-term overrides of diffraction materials
   AovSet aovs{};  // the auxiliary channels the pass writes (`--aov`; not part of name())
+  int adaptive_samples_per_axis = 0;  // filtered:adaptive's K (0: not adaptive)
+  AdaptiveBudget adaptive{};          // `--adaptive-error`, `--adaptive-time` (not part of name())
 
   // Throws facet::Error naming the known methods for anything else.
   static RenderMethod parse(const std::string& text);

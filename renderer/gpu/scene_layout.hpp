@@ -20,5 +20,5 @@ static_assert(sizeof(GpuBvhNode) == 32);
 static_assert(sizeof(GpuMaterial) == 64);
 static_assert(sizeof(GpuTextureLevel) == 16);
 static_assert(sizeof(GpuColormap) == 64);
-static_assert(sizeof(GpuTile) == 48);
+static_assert(sizeof(GpuTile) == 64);
 }  // namespace facet::gpu

@@ -32,7 +32,10 @@
 #define FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_1 17
 #define FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_2 18
 #define FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_3 19
-#define FACET_RENDER_BINDING_COUNT 20
+// filtered:adaptive's refinement: the frame positions of the pixels a listed dispatch renders, one RG32UI
+// texel each (render/direct_pass.glsl; renderer/gpu/direct_pass.cpp).
+#define FACET_RENDER_BINDING_PIXEL_LIST 20
+#define FACET_RENDER_BINDING_COUNT 21
 #define FACET_RENDER_PREINTEGRATED_SLICES 4  // the word bindings above
 
 // Specialization constants (what each selects: render/direct_pass.glsl).

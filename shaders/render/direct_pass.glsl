@@ -152,29 +152,45 @@ vec4 radiance(vec2 film, float pixel_step) {
   return vec4(shade(o, d, hit, film, pixel_step), hit.material == kNoHit ? 0.0 : 1.0);
 }
 
-// The tile position of this invocation: its workgroup renders block g s mod n (g: the workgroup's
-// index in the dispatch), so each lavapipe thread's contiguous share of the workgroups is spread
-// over the whole tile (renderer/gpu/workgroup_order.hpp).
-uvec2 tile_position() {
+// filtered:adaptive's refinement renders listed pixels (tile.list.x > 0) anywhere in the frame.
+layout(binding = FACET_RENDER_BINDING_PIXEL_LIST) uniform usamplerBuffer pixel_list;
+
+// This invocation's workgroup's block: block g s mod n of the n blocks (g: the workgroup's index in
+// the dispatch), so each lavapipe thread's contiguous share of the workgroups is spread over the whole
+// tile or list (renderer/gpu/workgroup_order.hpp).
+uint spread_block() {
   uint g = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  uint block = (g * tile.spread.y) % tile.spread.x;
+  return (g * tile.spread.y) % tile.spread.x;
+}
+
+// The tile position of this invocation.
+uvec2 tile_position() {
+  uint block = spread_block();
   return uvec2(block % gl_NumWorkGroups.x, block / gl_NumWorkGroups.x) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy;
 }
 
 void main() {
-  uvec2 at = tile_position();
-  uvec2 pixel = at + tile.rect.xy;
-  if (at.x >= tile.rect.z || at.y >= tile.rect.w) return;
+  uvec2 pixel;
+  uint i;  // the pixel's slot in the pixel buffer
+  if (tile.list.x != 0u) {
+    i = spread_block() * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
+    if (i >= tile.list.x) return;
+    pixel = texelFetch(pixel_list, int(i)).xy;
+  } else {
+    uvec2 at = tile_position();
+    if (at.x >= tile.rect.z || at.y >= tile.rect.w) return;
+    pixel = at + tile.rect.xy;
+    i = at.y * tile.rect.z + at.x;
+  }
   uint k = tile.stratum.w;
   float step = 1.0 / float(k);
   vec4 sample_value = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
   // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
   // end: the same float operations as averaging them within one invocation.
-  uint i = at.y * tile.rect.z + at.x;
   vec4 sum = tile.stratum.z != 0u ? pixels[i] + sample_value : sample_value;
   pixels[i] = tile.stratum.z == k * k - 1u ? sum / float(k * k) : sum;
   if (kWritesAovs) {  // sums over the strata, divided on the host by the hits (the error by k^2)
-    uint n = tile.rect.z * tile.rect.w;
+    uint n = tile.rect.z * tile.rect.w;  // a list's length for a list (rect = (0, 0, n, 1))
     pixels[n + i] = tile.stratum.z != 0u ? pixels[n + i] + aov_depth_normal : aov_depth_normal;
     pixels[2u * n + i] = tile.stratum.z != 0u ? pixels[2u * n + i] + aov_uv_error : aov_uv_error;
   }
