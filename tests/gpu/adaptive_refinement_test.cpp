@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/error.hpp"
 #include "cpu/reference_renderer.hpp"
 #include "gpu/adaptive_refinement.hpp"
 #include "gpu/direct_pass.hpp"
@@ -61,6 +62,19 @@ float max_abs_difference(const Image& a, const Image& b, std::size_t pixel) {
 }  // namespace adaptive_refinement_test
 
 using namespace adaptive_refinement_test;
+
+// filtered:adaptive[:K]: K = 4 unless given, in [2, 16]; the name survives a round trip.
+TEST(AdaptiveRefinement, MethodNamesItsStrata) {
+  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive").adaptive_samples_per_axis, 4);
+  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive").texture, gpu::RenderMethod::Texture::Filtered);
+  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive:8").adaptive_samples_per_axis, 8);
+  for (const char* text : {"filtered:adaptive", "filtered:adaptive:2", "filtered:adaptive:16"})
+    EXPECT_EQ(gpu::RenderMethod::parse(text).name(), text);
+  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive:4").name(), "filtered:adaptive");
+  for (const char* text : {"filtered:adaptive:1", "filtered:adaptive:17", "filtered:adaptive:", "filtered:adaptive4",
+                           "filtered:adaptive:ss:2"})
+    EXPECT_THROW(gpu::RenderMethod::parse(text), Error) << text;
+}
 
 TEST(AdaptiveRefinement, RanksByEstimateAndCutsAtTheBudget) {
   const float nan = std::numeric_limits<float>::quiet_NaN();

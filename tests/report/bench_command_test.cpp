@@ -143,7 +143,7 @@ TEST_F(Bench, QuickRunWritesAValidReport) {
     methods.insert(record["method"].get<std::string>());
   }
   EXPECT_EQ(methods, (std::set<std::string>{"naive", "mip", "colormip", "filtered", "filtered:table", "filtered:ss:2",
-                                            "ss:1", "ss:2", "ss:4", "ss:8"}));
+                                            "filtered:adaptive", "ss:1", "ss:2", "ss:4", "ss:8"}));
   // More rays per pixel must get closer to the reference on this aliasing-prone texture.
   double rmse_ss1 = 0, rmse_ss8 = 0;
   for (const json& record : results) {

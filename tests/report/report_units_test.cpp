@@ -272,7 +272,7 @@ TEST(MethodCatalogue, AppliesTextureMethodsOnlyToScenesWithSubPixelDetail) {
   textured.colormap_texture = true;
   const auto quick = names(select_methods(textured, true, {}));
   EXPECT_EQ(quick, (std::vector<std::string>{"naive", "mip", "colormip", "filtered", "filtered:table", "filtered:ss:2",
-                                             "ss:1", "ss:2", "ss:4", "ss:8"}));
+                                             "filtered:adaptive", "ss:1", "ss:2", "ss:4", "ss:8"}));
   EXPECT_EQ(names(select_methods(textured, false, {})).size(), quick.size() + 2);  // + filtered:ss:4, ss:16
   EXPECT_EQ(names(select_methods(plain, false, {"ss:99", "filtered"})),
             (std::vector<std::string>{"ss:99", "filtered"}));
