@@ -65,25 +65,24 @@ void write_heatmap(const CompareOptions& options, const Image& test, const Image
 
 // A frame with an `error` channel (`--aov error`): how its estimate ranks and sizes the true per-pixel
 // error (the mean absolute error over R, G, B) over the pixels its A channel marks as covered (all
-// pixels without A); docs/error_estimate.md.
-void add_error_estimate_quality(const std::filesystem::path& path, const Image& test, const Image& reference,
-                                nlohmann::json& result) {
+// pixels without A), within --crop if given; docs/error_estimate.md.
+void add_error_estimate_quality(const std::filesystem::path& path, const std::vector<int>& region, const Image& test,
+                                const Image& reference, nlohmann::json& result) {
   if (path.extension() != ".exr" || !exr_has_channel(path, "error")) return;
-  const ScalarImage estimate = read_exr_scalar(path, "error"), truth = absolute_error_map(test, reference);
-  const ScalarImage coverage =
-      exr_has_channel(path, "A") ? read_exr_scalar(path, "A") : ScalarImage(test.width, test.height, 1.0f);
-  std::vector<float> covered_estimate, covered_truth;
-  for (std::size_t i = 0; i < estimate.values.size(); ++i)
-    if (coverage.values[i] > 0.0f) {
-      covered_estimate.push_back(estimate.values[i]);
-      covered_truth.push_back(truth.values[i]);
-    }
-  if (covered_estimate.size() < 2) return;
-  const ErrorEstimateQuality quality = judge_error_estimate(covered_estimate, covered_truth);
-  result["error_spearman"] = quality.spearman;
-  result["error_mean_ratio"] = quality.mean_ratio;
+  ScalarImage estimate = read_exr_scalar(path, "error");
+  ScalarImage coverage = exr_has_channel(path, "A") ? read_exr_scalar(path, "A") : ScalarImage(estimate.width, estimate.height, 1.0f);
+  if (!region.empty()) {
+    const PixelRect rect{region[0], region[1], region[2], region[3]};
+    estimate = crop(estimate, rect);
+    coverage = crop(coverage, rect);
+  }
+  const std::optional<ErrorEstimateQuality> quality =
+      judge_covered_pixels(estimate.values, absolute_error_map(test, reference).values, coverage.values);
+  if (!quality) return;
+  result["error_spearman"] = quality->spearman;
+  result["error_mean_ratio"] = quality->mean_ratio;
   nlohmann::json bins = nlohmann::json::array();
-  for (const CalibrationBin& bin : quality.calibration) bins.push_back({bin.estimate, bin.truth});
+  for (const CalibrationBin& bin : quality->calibration) bins.push_back(nlohmann::json::array({bin.estimate, bin.truth}));
   result["error_calibration"] = bins;
 }
 
@@ -131,7 +130,7 @@ int run_compare(const CompareOptions& options) {
     result["width"] = tests[i].image.width;
     result["height"] = tests[i].image.height;
     if (!options.heatmap.empty()) write_heatmap(options, tests[i].image, reference.image, result);
-    if (options.crop.empty()) add_error_estimate_quality(options.images[i], tests[i].image, reference.image, result);
+    add_error_estimate_quality(options.images[i], options.crop, tests[i].image, reference.image, result);
     const std::string failed = failed_thresholds(comparisons[i], thresholds);
     if (!failed.empty()) {
       std::cerr << "facet: compare: failed: " << (sheet ? options.images[i].string() + ": " : "") << failed << "\n";

@@ -7,19 +7,40 @@
 
 namespace facet {
 
-Image crop(const Image& image, const PixelRect& rect) {
+namespace {
+
+void check_inside(const PixelRect& rect, int width, int height) {
   // Compared as differences so that huge values cannot overflow the sums.
   const bool inside = rect.width > 0 && rect.height > 0 && rect.x >= 0 && rect.y >= 0 &&
-                      rect.x <= image.width - rect.width && rect.y <= image.height - rect.height;
+                      rect.x <= width - rect.width && rect.y <= height - rect.height;
   if (!inside)
     throw Error("crop " + std::to_string(rect.x) + "," + std::to_string(rect.y) + "," + std::to_string(rect.width) +
-                "," + std::to_string(rect.height) + " is not inside the " + std::to_string(image.width) + "x" +
-                std::to_string(image.height) + " image");
-  Image region(rect.width, rect.height);
+                "," + std::to_string(rect.height) + " is not inside the " + std::to_string(width) + "x" +
+                std::to_string(height) + " image");
+}
+
+// Copies the rectangle's rows of `channels` values per pixel from a row-major plane of `width` pixels.
+template <class T>
+void copy_rows(const std::vector<T>& from, int width, std::vector<T>& to, const PixelRect& rect, int channels) {
   for (int y = 0; y < rect.height; ++y) {
-    const auto row = image.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(image.index(rect.x, rect.y + y));
-    std::copy(row, row + 3 * rect.width, region.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(region.index(0, y)));
+    const auto row = from.begin() + channels * (static_cast<std::ptrdiff_t>(rect.y + y) * width + rect.x);
+    std::copy(row, row + channels * rect.width, to.begin() + channels * static_cast<std::ptrdiff_t>(y) * rect.width);
   }
+}
+
+}  // namespace
+
+Image crop(const Image& image, const PixelRect& rect) {
+  check_inside(rect, image.width, image.height);
+  Image region(rect.width, rect.height);
+  copy_rows(image.rgb, image.width, region.rgb, rect, 3);
+  return region;
+}
+
+ScalarImage crop(const ScalarImage& image, const PixelRect& rect) {
+  check_inside(rect, image.width, image.height);
+  ScalarImage region(rect.width, rect.height);
+  copy_rows(image.values, image.width, region.values, rect, 1);
   return region;
 }
 

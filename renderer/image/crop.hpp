@@ -12,5 +12,6 @@ struct PixelRect {
 
 // The pixels of `rect`. Throws facet::Error if the rectangle is empty or not inside the image.
 Image crop(const Image& image, const PixelRect& rect);
+ScalarImage crop(const ScalarImage& image, const PixelRect& rect);
 
 }  // namespace facet

@@ -68,4 +68,16 @@ ErrorEstimateQuality judge_error_estimate(std::span<const float> estimate, std::
   return quality;
 }
 
+std::optional<ErrorEstimateQuality> judge_covered_pixels(std::span<const float> estimate, std::span<const float> truth,
+                                                         std::span<const float> coverage) {
+  std::vector<float> covered_estimate, covered_truth;
+  for (std::size_t i = 0; i < estimate.size(); ++i)
+    if (coverage[i] > 0.0f) {
+      covered_estimate.push_back(estimate[i]);
+      covered_truth.push_back(truth[i]);
+    }
+  if (covered_estimate.size() < 2) return std::nullopt;
+  return judge_error_estimate(covered_estimate, covered_truth);
+}
+
 }  // namespace facet

@@ -2,6 +2,7 @@
 // sizes the true per-pixel error: Spearman's rank correlation and a calibration table.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -23,5 +24,10 @@ struct ErrorEstimateQuality {
 };
 
 ErrorEstimateQuality judge_error_estimate(std::span<const float> estimate, std::span<const float> truth, int bins = 10);
+
+// judge_error_estimate over the pixels whose coverage (a frame's A) is above 0: the background's exact
+// zeros of both would inflate the ranking. Empty with fewer than two such pixels.
+std::optional<ErrorEstimateQuality> judge_covered_pixels(std::span<const float> estimate, std::span<const float> truth,
+                                                         std::span<const float> coverage);
 
 }  // namespace facet

@@ -217,6 +217,17 @@ TEST_F(CliAov, ErrorEstimateRanksTheTrueErrorOfFiltered) {
   const auto& bins = result.at("error_calibration");
   ASSERT_EQ(bins.size(), 10u);
   EXPECT_LT(bins[0][1].get<double>(), bins[9][1].get<double>());
+  // --crop judges the estimate within the region: the whole frame as a region gives the same figures,
+  // and the left half its own.
+  const std::string compare_files = kFacet + " compare " + (dir_ / "f.exr").string() + " " + (dir_ / "r.exr").string();
+  const auto whole = run_command(compare_files + " --json --crop 0,0,96,54");
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  EXPECT_EQ(nlohmann::json::parse(whole.out).at("error_spearman"), result.at("error_spearman"));
+  const auto half = run_command(compare_files + " --json --crop 0,0,48,54");
+  ASSERT_EQ(half.exit_code, 0) << half.err;
+  const double half_spearman = nlohmann::json::parse(half.out).at("error_spearman").get<double>();
+  EXPECT_GT(half_spearman, 0.5) << half.out;
+  EXPECT_NE(half_spearman, result.at("error_spearman").get<double>());
   // The estimate is no part of the colours: the frame without --aov has the same R, G, B.
   ASSERT_EQ(
       run_command(kFacet + " render " + scene + size + (dir_ / "plain.exr").string() + " --method filtered").exit_code,
