@@ -78,12 +78,7 @@ void add_error_estimate_quality(const std::filesystem::path& path, const std::ve
   }
   const std::optional<ErrorEstimateQuality> quality =
       judge_covered_pixels(estimate.values, absolute_error_map(test, reference).values, coverage.values);
-  if (!quality) return;
-  result["error_spearman"] = quality->spearman;
-  result["error_mean_ratio"] = quality->mean_ratio;
-  nlohmann::json bins = nlohmann::json::array();
-  for (const CalibrationBin& bin : quality->calibration) bins.push_back(nlohmann::json::array({bin.estimate, bin.truth}));
-  result["error_calibration"] = bins;
+  if (quality) result.update(to_json(*quality));
 }
 
 void print_result(const nlohmann::json& result, bool json) {

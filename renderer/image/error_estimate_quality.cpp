@@ -68,6 +68,12 @@ ErrorEstimateQuality judge_error_estimate(std::span<const float> estimate, std::
   return quality;
 }
 
+nlohmann::json to_json(const ErrorEstimateQuality& quality) {
+  nlohmann::json bins = nlohmann::json::array();
+  for (const CalibrationBin& bin : quality.calibration) bins.push_back(nlohmann::json::array({bin.estimate, bin.truth}));
+  return {{"error_spearman", quality.spearman}, {"error_mean_ratio", quality.mean_ratio}, {"error_calibration", bins}};
+}
+
 std::optional<ErrorEstimateQuality> judge_covered_pixels(std::span<const float> estimate, std::span<const float> truth,
                                                          std::span<const float> coverage) {
   std::vector<float> covered_estimate, covered_truth;

@@ -6,6 +6,8 @@
 #include <span>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace facet {
 
 // Spearman's rank correlation of two samples of equal length >= 2: Pearson's correlation of their
@@ -24,6 +26,10 @@ struct ErrorEstimateQuality {
 };
 
 ErrorEstimateQuality judge_error_estimate(std::span<const float> estimate, std::span<const float> truth, int bins = 10);
+
+// error_spearman, error_mean_ratio and error_calibration ([[estimate, truth], ...]): the keys of
+// `facet compare --json` and of `facet bench`'s records.
+nlohmann::json to_json(const ErrorEstimateQuality& quality);
 
 // judge_error_estimate over the pixels whose coverage (a frame's A) is above 0: the background's exact
 // zeros of both would inflate the ranking. Empty with fewer than two such pixels.

@@ -27,6 +27,7 @@ nlohmann::json to_json(const BenchRecord& r) {
   json.update(facet::to_json(r.comparison));
   json["image"] = r.image;
   json["heatmap"] = r.heatmap;
+  if (r.error_estimate) json.update(to_json(*r.error_estimate));
   return json;
 }
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/phase_timings.hpp"
+#include "image/error_estimate_quality.hpp"
 #include "image/image_comparison.hpp"
 #include "report/timing.hpp"
 
@@ -26,6 +27,7 @@ struct BenchRecord {
   PhaseTimings phases;      // of that: the preparation's phases and first_frame
   ImageComparison comparison;
   std::string image, heatmap;  // PNG paths relative to the output folder
+  std::optional<ErrorEstimateQuality> error_estimate;  // methods that estimate their per-pixel error (filtered...)
 
   bool ok() const { return !error.has_value(); }
   double time_ms() const { return timing.headline().median; }
@@ -35,7 +37,8 @@ struct BenchRecord {
 // facet_version and either
 // error, or time_ms (median; device time when there is one, else wall), time_ms_min, time_ms_max,
 // time_source ("gpu" | "wall"), wall_ms (median), wall_ms_min, wall_ms_max, gpu_ms (median or null),
-// repeats, prepare_ms, phases ({name: wall ms}), the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim, flip), image, heatmap.
+// repeats, prepare_ms, phases ({name: wall ms}), the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim, flip), image, heatmap;
+// for a method that estimates its error, also error_spearman, error_mean_ratio, error_calibration (as facet compare).
 // results.json adds `schema` to each (report_files.hpp).
 nlohmann::json to_json(const BenchRecord& record);
 

@@ -14,8 +14,10 @@
 #include "image/atomic_file.hpp"
 #include "image/flip.hpp"
 #include "image/heatmap.hpp"
+#include "image/metrics.hpp"
 #include "image/png_io.hpp"
 #include "image/thumbnail.hpp"
+#include "report/calibration_plot.hpp"
 #include "report/method_catalogue.hpp"
 #include "report/output_folder.hpp"
 #include "report/reference_cache.hpp"
@@ -55,6 +57,22 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   write_file_atomically(path, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
 }
 
+// How well a method's per-pixel error estimate (docs/error_estimate.md) ranks and sizes its true error:
+// one more frame with the `error` channel, untimed (its program accumulates the estimate, the timed
+// one does not). Empty for methods without an estimate.
+std::optional<ErrorEstimateQuality> judge_estimate(vk::Context& context, const Scene& scene,
+                                                   const CatalogueEntry& method, const Image& reference) {
+  gpu::RenderMethod estimating = method.render_method();
+  if (estimating.texture != gpu::RenderMethod::Texture::Filtered) return std::nullopt;
+  estimating.aovs.error = true;
+  frames::PreparedFrames prepared(scene, estimating, &context);
+  const Image image = prepared.render(scene.camera, reference.width, reference.height).image;
+  const auto channel = std::find_if(image.channels.begin(), image.channels.end(),
+                                    [](const NamedChannel& c) { return c.name == "error"; });
+  if (channel == image.channels.end()) return std::nullopt;
+  return judge_covered_pixels(channel->values, absolute_error_map(image, reference).values, image.alpha);
+}
+
 // Times one method on one scene; any failure becomes the record's error.
 BenchRecord measure_method(vk::Context& context, const Scene& scene, const CatalogueEntry& method,
                            const Image& reference, int repeats, const std::filesystem::path& out_dir,
@@ -78,6 +96,7 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
       return gpu_ms;
     });
     record.comparison = compare_images(first.image, reference);
+    record.error_estimate = judge_estimate(context, scene, method, reference);
     record.image = scene_name + "/" + file_stem(method.name) + ".png";
     record.heatmap = scene_name + "/" + file_stem(method.name) + ".flip.png";
     write_png_preview(out_dir / record.image, thumbnail(first.image, kThumbnailWidth));
@@ -86,6 +105,7 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
   } catch (const std::exception& e) {
     record.error = e.what();
     record.timing = {};
+    record.error_estimate.reset();
     record.image.clear();
     record.heatmap.clear();
   }
@@ -140,6 +160,7 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   ProgressBar progress("bench " + run.name, static_cast<std::int64_t>(methods.size()) * (bench.repeats + 1));
   std::int64_t step = 0;
   std::vector<PlotPoint> points, wall_points;
+  std::vector<CalibrationCurve> calibration;
   for (std::size_t i = 0; i < methods.size(); ++i) {
     BenchRecord record = measure_method(context, scene, methods[i], reference.image, bench.repeats, options.out_dir,
                                         run.name, base, [&] { progress.update(++step); });
@@ -148,6 +169,7 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
     if (record.ok()) {
       points.push_back({record.method, record.time_ms(), record.comparison.rmse});
       wall_points.push_back({record.method, record.timing.wall_ms.median, record.comparison.rmse});
+      if (record.error_estimate) calibration.push_back({record.method, record.error_estimate->calibration});
     }
     bench.records.push_back(std::move(record));
   }
@@ -160,6 +182,11 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   run.wall_plot_svg = speed_error_svg(
       wall_points, {run.name + ": wall time vs error", "wall time per frame (ms, median)", "RMSE vs reference"});
   write_text(options.out_dir / run.wall_plot, run.wall_plot_svg);
+  if (!calibration.empty()) {
+    run.calibration_plot = run.name + "/calibration.svg";
+    run.calibration_plot_svg = calibration_svg(calibration, run.name + ": error estimate calibration");
+    write_text(options.out_dir / run.calibration_plot, run.calibration_plot_svg);
+  }
 }
 
 }  // namespace

@@ -42,6 +42,8 @@ struct SceneRun {
   double reference_ms = 0.0;
   std::string reference_image, plot, wall_plot;  // relative to out_dir; plot: x = time_ms, wall_plot: x = wall_ms
   std::string plot_svg, wall_plot_svg;           // their text, for index.html to inline
+  // The error estimates' calibration plot ("" when no method of the scene estimates its error).
+  std::string calibration_plot, calibration_plot_svg;
 };
 
 struct BenchRun {

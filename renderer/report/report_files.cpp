@@ -30,7 +30,11 @@ const std::vector<MetricColumn>& metric_columns() {
       {"PSNR dB", [](const BenchRecord& r) { return format_3g(r.comparison.psnr); }},
       {"max abs", [](const BenchRecord& r) { return format_3g(r.comparison.max_abs); }},
       {"SSIM", [](const BenchRecord& r) { return format_3g(r.comparison.ssim); }},
-      {"FLIP", [](const BenchRecord& r) { return format_3g(r.comparison.flip); }}};
+      {"FLIP", [](const BenchRecord& r) { return format_3g(r.comparison.flip); }},
+      // How the method's own per-pixel error estimate ranks its true error (Spearman; docs/error_estimate.md).
+      {"estimate ρ", [](const BenchRecord& r) {
+         return r.error_estimate ? format_3g(r.error_estimate->spearman) : std::string("–");
+       }}};
   return columns;
 }
 
@@ -71,7 +75,8 @@ nlohmann::json run_json(const BenchRun& run) {
                     {"reference_ms", s.reference_ms},
                     {"reference_image", s.reference_image},
                     {"plot", s.plot},
-                    {"wall_plot", s.wall_plot}});
+                    {"wall_plot", s.wall_plot},
+                    {"calibration_plot", s.calibration_plot}});
     }
     scenes.push_back(scene);
   }

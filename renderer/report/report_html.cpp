@@ -81,7 +81,7 @@ void write_html_scene(std::ostringstream& html, const BenchRun& run, const Scene
   html << ", " << scene.width << "×" << scene.height << ", reference "
        << (scene.reference_cache_hit ? "from the cache" : "rendered in " + format_3g(scene.reference_ms) + " ms")
        << "</p>\n<div class=\"plots\">\n"
-       << scene.plot_svg << scene.wall_plot_svg << "</div>\n";
+       << scene.plot_svg << scene.wall_plot_svg << scene.calibration_plot_svg << "</div>\n";
   write_html_metrics(html, run, scene);
   html << flip_colour_bar("magma-" + scene.name)
        << "<div class=\"methods\">\n<div class=\"method\"><b>reference</b><img src=\""

@@ -63,7 +63,10 @@ void write_markdown_scene(std::ostringstream& md, const BenchRun& run, const Sce
   md << ", " << scene.width << "×" << scene.height << ", reference "
      << (scene.reference_cache_hit ? "from the cache" : "rendered in " + format_3g(scene.reference_ms) + " ms")
      << "\n\n![" << scene.name << ": speed vs error](" << scene.plot << ") ![" << scene.name << ": wall time vs error]("
-     << scene.wall_plot << ")\n\n| method |";
+     << scene.wall_plot << ")";
+  if (!scene.calibration_plot.empty())
+    md << " ![" << scene.name << ": error estimate calibration](" << scene.calibration_plot << ")";
+  md << "\n\n| method |";
   const std::vector<MetricColumn>& columns = metric_columns();
   for (const MetricColumn& column : columns) md << " " << column.header << " |";
   md << " Pareto |\n|---|";

@@ -91,12 +91,6 @@ std::vector<std::string> legend_lines(const std::vector<PlotPoint>& points,
 
 bool plottable(const PlotPoint& p) { return p.x > 0.0 && p.y > 0.0 && std::isfinite(p.x) && std::isfinite(p.y); }
 
-std::string number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.2f", value);
-  return buffer;
-}
-
 std::string decade_label(int decade) {
   if (decade >= 0 && decade <= 3) return std::to_string(static_cast<int>(std::lround(std::pow(10.0, decade))));
   return "1e" + std::to_string(decade);
@@ -120,6 +114,12 @@ LogAxis LogAxis::enclosing(const std::vector<double>& values, double pixel_lo, d
   LogAxis axis{static_cast<int>(std::floor(lo)), static_cast<int>(std::ceil(hi)), pixel_lo, pixel_hi};
   if (axis.hi_decade <= axis.lo_decade) axis.hi_decade = axis.lo_decade + 1;
   return axis;
+}
+
+std::string svg_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", value);
+  return buffer;
 }
 
 std::string xml_escape(const std::string& text) {
@@ -174,14 +174,14 @@ std::string speed_error_svg(const std::vector<PlotPoint>& all_points, const Plot
       << xml_escape(labels.title) << "</text>\n";
   // Decade grid lines and labels.
   for (int d = x_axis.lo_decade; d <= x_axis.hi_decade; ++d) {
-    const std::string px = number(x_axis.to_pixel(std::pow(10.0, d)));
+    const std::string px = svg_number(x_axis.to_pixel(std::pow(10.0, d)));
     svg << "<line class=\"grid\" x1=\"" << px << "\" y1=\"" << kTop << "\" x2=\"" << px << "\" y2=\""
         << kHeight - kBottom << "\" stroke=\"#ddd\"/>\n";
     svg << "<text x=\"" << px << "\" y=\"" << kHeight - kBottom + 14 << "\" text-anchor=\"middle\">" << decade_label(d)
         << "</text>\n";
   }
   for (int d = y_axis.lo_decade; d <= y_axis.hi_decade; ++d) {
-    const std::string py = number(y_axis.to_pixel(std::pow(10.0, d)));
+    const std::string py = svg_number(y_axis.to_pixel(std::pow(10.0, d)));
     svg << "<line class=\"grid\" x1=\"" << kLeft << "\" y1=\"" << py << "\" x2=\"" << kWidth - kRight << "\" y2=\""
         << py << "\" stroke=\"#ddd\"/>\n";
     svg << "<text x=\"" << kLeft - 4 << "\" y=\"" << py << "\" text-anchor=\"end\" dominant-baseline=\"middle\">"
@@ -194,29 +194,29 @@ std::string speed_error_svg(const std::vector<PlotPoint>& all_points, const Plot
   // The front as a staircase: from each member, right at its error until the next member's time.
   if (!front.empty()) {
     svg << "<path class=\"front\" fill=\"none\" stroke=\"#c33\" stroke-width=\"1.5\" d=\"M"
-        << number(x_axis.to_pixel(points[front[0]].x)) << " " << number(y_axis.to_pixel(points[front[0]].y));
+        << svg_number(x_axis.to_pixel(points[front[0]].x)) << " " << svg_number(y_axis.to_pixel(points[front[0]].y));
     for (std::size_t k = 1; k < front.size(); ++k)
-      svg << " H" << number(x_axis.to_pixel(points[front[k]].x)) << " V" << number(y_axis.to_pixel(points[front[k]].y));
+      svg << " H" << svg_number(x_axis.to_pixel(points[front[k]].x)) << " V" << svg_number(y_axis.to_pixel(points[front[k]].y));
     svg << "\"/>\n";
   }
   for (std::size_t i = 0; i < points.size(); ++i) {
     const bool on_front = std::find(front.begin(), front.end(), i) != front.end();
     const auto [x, y] = at[i];
-    svg << "<circle class=\"point" << (on_front ? " front" : "") << "\" cx=\"" << number(x) << "\" cy=\"" << number(y)
+    svg << "<circle class=\"point" << (on_front ? " front" : "") << "\" cx=\"" << svg_number(x) << "\" cy=\"" << svg_number(y)
         << "\" r=\"" << kPointRadius << "\" fill=\"" << (on_front ? "#c33" : "#369") << "\"><title>"
         << xml_escape(points[i].label) << "</title></circle>\n";
     if (!placed[i]) continue;
     const Box& box = placed[i]->box;
     if (placed[i]->leader) {  // to the box's nearest point
-      svg << "<line class=\"leader\" x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
-          << number(std::clamp(x, box.left, box.right)) << "\" y2=\"" << number(std::clamp(y, box.top, box.bottom))
+      svg << "<line class=\"leader\" x1=\"" << svg_number(x) << "\" y1=\"" << svg_number(y) << "\" x2=\""
+          << svg_number(std::clamp(x, box.left, box.right)) << "\" y2=\"" << svg_number(std::clamp(y, box.top, box.bottom))
           << "\" stroke=\"#999\" stroke-width=\"0.75\"/>\n";
     }
-    svg << "<text class=\"label\" x=\"" << number(box.left) << "\" y=\"" << number(box.top + kLabelAscent) << "\">"
+    svg << "<text class=\"label\" x=\"" << svg_number(box.left) << "\" y=\"" << svg_number(box.top + kLabelAscent) << "\">"
         << xml_escape(points[i].label) << "</text>\n";
   }
   for (std::size_t k = 0; k < legend.size(); ++k)
-    svg << "<text class=\"legend\" x=\"8\" y=\"" << number(kHeight + kLegendLine * static_cast<double>(k) + 4) << "\">"
+    svg << "<text class=\"legend\" x=\"8\" y=\"" << svg_number(kHeight + kLegendLine * static_cast<double>(k) + 4) << "\">"
         << xml_escape(legend[k]) << "</text>\n";
   svg << "</svg>\n";
   return svg.str();

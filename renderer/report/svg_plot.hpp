@@ -41,6 +41,9 @@ struct PlotLabels {
 // <text class="legend"> lines under the plot (the SVG grows to hold them).
 std::string speed_error_svg(const std::vector<PlotPoint>& points, const PlotLabels& labels);
 
+// A coordinate as SVG text: two decimals.
+std::string svg_number(double value);
+
 // &, <, >, " escaped for XML text and attribute values.
 std::string xml_escape(const std::string& text);
 

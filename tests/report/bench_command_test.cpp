@@ -108,6 +108,9 @@ void expect_html_report(const std::string& html, const json& results) {
     ++plots;
   }
   EXPECT_EQ(plots, 2);  // time_ms and wall_ms against RMSE
+  // The error estimates' calibration plot, inline too, when a method estimates its error.
+  const bool estimates = std::any_of(results.begin(), results.end(), [](const json& r) { return r.contains("error_spearman"); });
+  EXPECT_EQ(html.find("<svg class=\"calibration\"") != std::string::npos, estimates);
   auto number = [](const json& value) { return value.is_null() ? std::string("–") : format_3g(value.get<double>()); };
   for (const json& r : results) {
     std::vector<std::string> cells = {
@@ -160,6 +163,25 @@ TEST_F(Bench, QuickRunWritesAValidReport) {
   const fs::path plot = out / run["scenes"][0]["plot"].get<std::string>();
   ASSERT_TRUE(fs::is_regular_file(plot));
   EXPECT_NE(test::read_text(plot).find("<circle class=\"point"), std::string::npos);
+  // The methods that estimate their error carry how well it ranks the true error, and the scene's
+  // calibration plot draws one curve for each of them.
+  const std::set<std::string> estimating = {"filtered", "filtered:ss:2", "filtered:adaptive"};
+  for (const json& record : results) {
+    const bool estimates = estimating.contains(record["method"].get<std::string>());
+    EXPECT_EQ(record.contains("error_spearman"), estimates) << record.dump();
+    if (!estimates) continue;
+    EXPECT_GE(record["error_spearman"].get<double>(), -1.0);
+    EXPECT_LE(record["error_spearman"].get<double>(), 1.0);
+    EXPECT_EQ(record["error_calibration"].size(), 10u);
+  }
+  const fs::path calibration = out / run["scenes"][0]["calibration_plot"].get<std::string>();
+  ASSERT_TRUE(fs::is_regular_file(calibration));
+  const std::string calibration_svg = test::read_text(calibration);
+  std::size_t curves = 0;
+  for (std::size_t at = calibration_svg.find("<polyline class=\"curve\""); at != std::string::npos;
+       at = calibration_svg.find("<polyline class=\"curve\"", at + 1))
+    ++curves;
+  EXPECT_EQ(curves, estimating.size());
   // The stability table: every kernel row measured, every number finite.
   ASSERT_GE(run["kernel_stability"].size(), 4u);
   for (const json& row : run["kernel_stability"]) {
