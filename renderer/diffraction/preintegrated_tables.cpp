@@ -237,9 +237,8 @@ PreintegratedLayout preintegrated_layout(const SpectralTables& tables, const Wav
   return l;
 }
 
-PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, const WavelengthSamples& samples,
-                                               const PreintegratedDomain& domain,
-                                               const PreintegrationSettings& settings) {
+PreintegratedTables preintegrated_header(const SpectralTables& tables, const WavelengthSamples& samples,
+                                         const PreintegratedDomain& domain, const PreintegrationSettings& settings) {
   const PreintegratedLayout l = preintegrated_layout(tables, samples, domain, settings);
   if (l.bytes > settings.max_bytes)
     throw Error("preintegrated tables: " + std::to_string(l.nu) + " x " + std::to_string(l.nv) + " (u, v) nodes x " +
@@ -258,7 +257,21 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   t.sigma_nm = tables.sigma_nm;
   t.hs_nm = tables.hs_nm;
   t.R0 = tables.R0;
+  return t;
+}
 
+PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, const WavelengthSamples& samples,
+                                               const PreintegratedDomain& domain,
+                                               const PreintegrationSettings& settings) {
+  PreintegratedTables t = preintegrated_header(tables, samples, domain, settings);
+  t.packed.resize(t.word_count());
+  build_preintegrated_words(tables, samples, t, t.packed);
+  return t;
+}
+
+void build_preintegrated_words(const SpectralTables& tables, const WavelengthSamples& samples, PreintegratedTables& t,
+                               std::span<std::uint32_t> packed) {
+  if (packed.size() != t.word_count()) throw Error("internal: preintegrated words of the wrong size");
   if (tables.r > kMaxRadius) throw Error("preintegrated tables: the coherence window is too narrow (radius > 16 bins)");
   std::vector<WavelengthPowers> powers;
   std::vector<glm::dvec3> weights;
@@ -295,10 +308,9 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   // High powers of delta can carry coefficients below float's range: their scale stays normal.
   for (int p = 0; p < t.terms; ++p)
     t.scale[p] = std::max(static_cast<float>(largest[p]), std::numeric_limits<float>::min());
-  t.packed.resize(T.size() * t.words);
   for (size_t i = 0; i < T.size(); ++i) {
     const glm::vec3 v = glm::vec3(T[i] / static_cast<double>(t.scale[i % t.terms]));
-    std::uint32_t* out = &t.packed[i * t.words];
+    std::uint32_t* out = &packed[i * t.words];
     if (t.words == 2) {
       out[0] = glm::packHalf2x16(glm::vec2(v.x, v.y));
       out[1] = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
@@ -306,7 +318,6 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
       for (int c = 0; c < 3; ++c) out[c] = glm::floatBitsToUint(v[c]);
     }
   }
-  return t;
 }
 
 glm::dvec3 evaluate_preintegrated(const PreintegratedTables& t, const glm::dvec3& wi, const glm::dvec3& wr) {
