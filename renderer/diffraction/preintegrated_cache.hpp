@@ -23,8 +23,7 @@ std::uint64_t table_cache_max_bytes();
 // cache hit refreshes it) until the rest take at most max_bytes, never `keep`. Safe beside other
 // processes: a file they delete first is skipped, one they are reading stays readable to them (Linux
 // unlinks open files without harm), and they write by rename, so no reader sees half a file.
-void evict_table_files(const std::filesystem::path& folder, std::uint64_t max_bytes,
-                       const std::filesystem::path& keep);
+void evict_table_files(const std::filesystem::path& folder, std::uint64_t max_bytes, const std::filesystem::path& keep);
 
 // Hex digest of everything the tables depend on: the spectral tables (grating heights through their
 // DFTs, Taylor terms, coherence, reflectance), the wavelength samples and weights, the direction

@@ -37,8 +37,9 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
   const auto& source = std::get<DiffractionMaterial>(scene.materials[scene_material]);
   if (method == DiffractionMethod::Preintegrated) {
     const std::uint64_t used = data.preintegrated_word_count * sizeof(std::uint32_t);
-    PendingTables pending{scene.material_names[scene_material], &prepared,
-                          diffraction_view_domain(scene, scene_material), {}, {}, data.preintegrated_word_count};
+    PendingTables pending{
+        scene.material_names[scene_material], &prepared, diffraction_view_domain(scene, scene_material), {}, {},
+        data.preintegrated_word_count};
     pending.settings.tolerance = kPreintegrationTolerance;
     pending.settings.max_bytes = max_bytes > used ? max_bytes - used : 0;
     try {
@@ -83,7 +84,8 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
 
 PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data, std::uint64_t binding_words,
                                               const std::filesystem::path& table_cache) {
-  PreintegratedWords result{{}, slice_preintegrated_words(data.preintegrated_word_count, data.cell_words, binding_words)};
+  PreintegratedWords result{{},
+                            slice_preintegrated_words(data.preintegrated_word_count, data.cell_words, binding_words)};
   for (const auto& [begin, end] : result.slices.ranges)
     result.buffers.push_back(vk::Buffer::of<std::uint32_t>(context, end - begin));
   if (data.preintegrated.empty()) return result;

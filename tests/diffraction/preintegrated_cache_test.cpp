@@ -232,7 +232,7 @@ TEST(PreintegratedCache, TheCacheKeepsItsBound) {
     fs::last_write_time(entry.path(), fs::last_write_time(entry.path()) - std::chrono::seconds(60));
   }
   ASSERT_GT(two, first);
-  EXPECT_EQ(use(a, two), TableCacheUse::Hit);  // a is now the more recently used
+  EXPECT_EQ(use(a, two), TableCacheUse::Hit);   // a is now the more recently used
   ASSERT_EQ(use(c, two), TableCacheUse::Miss);  // c needs room: b goes (c is smaller than b: 2 files fit)
   EXPECT_EQ(names_in(tables).size(), 2u);
   EXPECT_EQ(use(a, two), TableCacheUse::Hit);
