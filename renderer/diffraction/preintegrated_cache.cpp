@@ -22,7 +22,7 @@ namespace facet::diffraction {
 namespace {
 
 // Bump when the file layout or the tables' bytes for the same inputs change (a new build algorithm).
-constexpr std::string_view kFormat = "facet preintegrated tables v3\n";
+constexpr std::string_view kFormat = "facet preintegrated tables v4\n";
 constexpr size_t kKeyChars = 32;  // ContentHash::hex()
 
 template <class T>
@@ -177,7 +177,8 @@ void evict_table_files(const std::filesystem::path& folder, std::uint64_t max_by
   std::error_code error;
   for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
     if (it->path().extension() != ".tables") continue;  // not the writers' temporaries
-    std::error_code gone;  // another process may have deleted it since the listing
+    // Another process may have deleted it since the listing.
+    std::error_code gone;
     const std::uint64_t bytes = it->file_size(gone);
     const auto used = it->last_write_time(gone);
     if (gone) continue;
