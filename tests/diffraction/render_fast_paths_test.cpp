@@ -200,5 +200,20 @@ TEST(DiffractionFastPathsRender, SecondRenderReadsTheTablesFromTheCache) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(DiffractionFastPathsRender, ABadCacheBoundIsOneLineAndNoFile) {
+  const std::filesystem::path dir = std::filesystem::path(FACET_BINARY_DIR) / "render_fast_paths_bad_bound";
+  std::filesystem::remove_all(dir);
+  const std::filesystem::path out = dir / "frame.exr";
+  const auto r = test::run_command("FACET_CACHE_MAX_MIB=lots FACET_CACHE_DIR='" + (dir / "cache").string() + "' " +
+                                   std::string(FACET_EXECUTABLE) + " render " + kPlate.string() +
+                                   " --width 8 --height 8 --diffraction preintegrated -o " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.err.rfind("facet: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("FACET_CACHE_MAX_MIB"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace facet
