@@ -114,43 +114,66 @@ AxisWindows axis_windows(const SpectralTables& t, const std::vector<WavelengthPo
   return w;
 }
 
-// Adds weight k^2 sum_{n+n'=p} Re(b_n conj b_n') to T'_p, the coefficient of w^p (eq. F.4'), at
-// one node (u, v) for one wavelength, with b_n = (i k h_s)^n / n! C_n. The pairs (n, n') and
-// (n', n) are conjugates, so their imaginary parts cancel. Complex products are written out
-// (std::complex's guard against inf/NaN costs a call each).
-class NodeIntegrator {
+// Adds weight k^2 sum_{n+n'=p} Re(b_n conj b_n') to T'_p, the coefficient of w^p (eq. F.4'), at the
+// nodes (u, v) of one row for one wavelength at a time, with b_n = (i k h_s)^n / n! C_n. The pairs
+// (n, n') and (n', n) are conjugates, so their imaginary parts cancel. The window separates
+// (e_j = e_x(j_x) e_y(j_y), eq. F.2), so C_n = sum_{j_x} e_x(j_x) G_n(j_x) with G_n(j_x) =
+// sum_{j_y} e_y(j_y) H_n(j): G is summed once per row and wavelength over the bin columns the row's
+// windows reach, and a node then sums 2r + 1 columns instead of (2r + 1)^2 bins. Complex products are
+// written out (std::complex's guard against inf/NaN costs a call each).
+class RowIntegrator {
  public:
-  explicit NodeIntegrator(const SpectralTables& t, const std::vector<char>& live)
+  explicit RowIntegrator(const SpectralTables& t, const std::vector<char>& live)
       : t_(t), live_(live), c_re_(t.N), c_im_(t.N), b_re_(t.N), b_im_(t.N), q_(2 * t.N - 1) {}
 
-  // Column window x at (iu, wavelength), row window y at (iv, wavelength).
-  void add(const AxisWindows& x, size_t x_at, const AxisWindows& y, size_t y_at, const WavelengthPowers& s,
-           glm::dvec3 weight, std::vector<glm::dvec3>& T) {
+  // G over the bin columns jx_first..jx_last for the row window y at (iv, wavelength). Only live bins
+  // are summed; a column without any is marked dead, so a node whose window holds no live bin is skipped.
+  void set_row_window(const AxisWindows& y, size_t y_at, int jx_first, int jx_last) {
     const int N = t_.N, r = t_.r;
-    const int jx0 = x.j0[x_at], jy0 = y.j0[y_at];
-    // The live bins of the window first: most (node, wavelength) pairs of a periodic grating have none.
-    int live_count = 0;
-    for (int dy = -r; dy <= r; ++dy)
-      for (int dx = -r; dx <= r; ++dx) {
-        const DiffractionTableEntry bin = diffraction_table_entry(0, jx0 + dx, jy0 + dy, t_.J, 1);  // index: the bin
-        if (bin.valid && live_[bin.index])
-          window_[live_count++] = {dx + r, dy + r, bin.index * t_.stored_terms, bin.conjugate};
-      }
-    if (live_count == 0 || x.sum[x_at] * y.sum[y_at] < kNegligibleWindow) return;
-    const double* ex = &x.e[x_at * x.width];
+    const size_t columns = static_cast<size_t>(jx_last - jx_first + 1);
+    first_ = jx_first;
+    g_re_.assign(columns * N, 0.0);
+    g_im_.assign(columns * N, 0.0);
+    g_live_.assign(columns, 0);
     const double* ey = &y.e[y_at * y.width];
+    const int jy0 = y.j0[y_at];
+    for (size_t c = 0; c < columns; ++c)
+      for (int dy = -r; dy <= r; ++dy) {
+        const DiffractionTableEntry bin =
+            diffraction_table_entry(0, jx_first + static_cast<int>(c), jy0 + dy, t_.J, 1);  // index: the bin
+        if (!bin.valid || !live_[bin.index]) continue;
+        g_live_[c] = 1;
+        const double e = ey[dy + r], sign = bin.conjugate ? -e : e;
+        const Complex* H = &t_.coefficients[static_cast<size_t>(bin.index) * t_.stored_terms];  // N contiguous terms
+        double* g_re = &g_re_[c * N];
+        double* g_im = &g_im_[c * N];
+        for (int n = 0; n < N; ++n) {
+          g_re[n] += e * H[n].real();
+          g_im[n] += sign * H[n].imag();
+        }
+      }
+  }
+
+  // The node whose column window x is at (iu, wavelength), into its T'_p.
+  void add(const AxisWindows& x, size_t x_at, const WavelengthPowers& s, glm::dvec3 weight, glm::dvec3* T) {
+    const int N = t_.N, width = x.width;
+    const size_t c0 = static_cast<size_t>(x.j0[x_at] - t_.r - first_);
+    const double* ex = &x.e[x_at * width];
     std::fill(c_re_.begin(), c_re_.end(), 0.0);
     std::fill(c_im_.begin(), c_im_.end(), 0.0);
-    for (int i = 0; i < live_count; ++i) {
-      const LiveBin& bin = window_[i];
-      const double e = ex[bin.x] * ey[bin.y];
-      const double sign = bin.conjugate ? -e : e;
-      const Complex* H = &t_.coefficients[bin.index];  // the N terms of one bin are contiguous
+    bool live = false;
+    for (int d = 0; d < width; ++d) {
+      if (!g_live_[c0 + d]) continue;
+      live = true;
+      const double e = ex[d];
+      const double* g_re = &g_re_[(c0 + d) * N];
+      const double* g_im = &g_im_[(c0 + d) * N];
       for (int n = 0; n < N; ++n) {
-        c_re_[n] += e * H[n].real();
-        c_im_[n] += sign * H[n].imag();
+        c_re_[n] += e * g_re[n];
+        c_im_[n] += e * g_im[n];
       }
     }
+    if (!live) return;
     // b_n = i^n power_n C_n: i^n rotates by a quarter turn per n.
     for (int n = 0; n < N; ++n) {
       const double re = s.power[n] * c_re_[n], im = s.power[n] * c_im_[n];
@@ -180,15 +203,12 @@ class NodeIntegrator {
   }
 
  private:
-  struct LiveBin {
-    int x, y;  // window position, 0..2r
-    int index;
-    bool conjugate;
-  };
   const SpectralTables& t_;
   const std::vector<char>& live_;
   std::vector<double> c_re_, c_im_, b_re_, b_im_, q_;
-  LiveBin window_[(2 * kMaxRadius + 1) * (2 * kMaxRadius + 1)];
+  int first_ = 0;                    // the bin column of G's first
+  std::vector<double> g_re_, g_im_;  // [(jx - first_) * N + n]
+  std::vector<char> g_live_;         // per column: whether it holds a live bin
 };
 
 PreintegratedGrid kernel_grid(const PreintegratedTables& t) {
@@ -237,9 +257,8 @@ PreintegratedLayout preintegrated_layout(const SpectralTables& tables, const Wav
   return l;
 }
 
-PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, const WavelengthSamples& samples,
-                                               const PreintegratedDomain& domain,
-                                               const PreintegrationSettings& settings) {
+PreintegratedTables preintegrated_header(const SpectralTables& tables, const WavelengthSamples& samples,
+                                         const PreintegratedDomain& domain, const PreintegrationSettings& settings) {
   const PreintegratedLayout l = preintegrated_layout(tables, samples, domain, settings);
   if (l.bytes > settings.max_bytes)
     throw Error("preintegrated tables: " + std::to_string(l.nu) + " x " + std::to_string(l.nv) + " (u, v) nodes x " +
@@ -258,7 +277,21 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   t.sigma_nm = tables.sigma_nm;
   t.hs_nm = tables.hs_nm;
   t.R0 = tables.R0;
+  return t;
+}
 
+PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, const WavelengthSamples& samples,
+                                               const PreintegratedDomain& domain,
+                                               const PreintegrationSettings& settings) {
+  PreintegratedTables t = preintegrated_header(tables, samples, domain, settings);
+  t.packed.resize(t.word_count());
+  build_preintegrated_words(tables, samples, t, t.packed);
+  return t;
+}
+
+void build_preintegrated_words(const SpectralTables& tables, const WavelengthSamples& samples, PreintegratedTables& t,
+                               std::span<std::uint32_t> packed) {
+  if (packed.size() != t.word_count()) throw Error("internal: preintegrated words of the wrong size");
   if (tables.r > kMaxRadius) throw Error("preintegrated tables: the coherence window is too narrow (radius > 16 bins)");
   std::vector<WavelengthPowers> powers;
   std::vector<glm::dvec3> weights;
@@ -273,13 +306,20 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   std::vector<glm::dvec3> T(nodes * t.terms, glm::dvec3(0.0));
   const AxisWindows columns = axis_windows(tables, powers, 0, t.origin.x, t.spacing.x, t.nu);
   tbb::parallel_for(0, t.nv, [&](int iv) {
-    NodeIntegrator integrator(tables, live);
+    RowIntegrator integrator(tables, live);
     const AxisWindows row = axis_windows(tables, powers, 1, t.origin.y + iv * t.spacing.y, 0.0, 1);
-    std::vector<glm::dvec3> node(t.terms);
+    std::vector<glm::dvec3> sums(static_cast<size_t>(t.nu) * t.terms, glm::dvec3(0.0));  // T'_p of the row's nodes
+    for (size_t i = 0; i < powers.size(); ++i) {
+      const size_t y_at = row.at(i, 0);
+      // j0 grows with u: the row's windows reach the columns from the first node's to the last's.
+      integrator.set_row_window(row, y_at, columns.j0[columns.at(i, 0)] - tables.r,
+                                columns.j0[columns.at(i, t.nu - 1)] + tables.r);
+      for (int iu = 0; iu < t.nu; ++iu)
+        if (columns.sum[columns.at(i, iu)] * row.sum[y_at] >= kNegligibleWindow)
+          integrator.add(columns, columns.at(i, iu), powers[i], weights[i], &sums[static_cast<size_t>(iu) * t.terms]);
+    }
     for (int iu = 0; iu < t.nu; ++iu) {
-      std::fill(node.begin(), node.end(), glm::dvec3(0.0));
-      for (size_t i = 0; i < powers.size(); ++i)
-        integrator.add(columns, columns.at(i, iu), row, row.at(i, 0), powers[i], weights[i], node);
+      const glm::dvec3* node = &sums[static_cast<size_t>(iu) * t.terms];
       glm::dvec3* out = &T[(static_cast<size_t>(iv) * t.nu + iu) * t.terms];
       for (int q = 0; q < t.terms; ++q)
         for (int p = q; p < t.terms; ++p) out[q] += recentre[q * t.terms + p] * node[p];
@@ -295,10 +335,9 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   // High powers of delta can carry coefficients below float's range: their scale stays normal.
   for (int p = 0; p < t.terms; ++p)
     t.scale[p] = std::max(static_cast<float>(largest[p]), std::numeric_limits<float>::min());
-  t.packed.resize(T.size() * t.words);
   for (size_t i = 0; i < T.size(); ++i) {
     const glm::vec3 v = glm::vec3(T[i] / static_cast<double>(t.scale[i % t.terms]));
-    std::uint32_t* out = &t.packed[i * t.words];
+    std::uint32_t* out = &packed[i * t.words];
     if (t.words == 2) {
       out[0] = glm::packHalf2x16(glm::vec2(v.x, v.y));
       out[1] = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
@@ -306,7 +345,6 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
       for (int c = 0; c < 3; ++c) out[c] = glm::floatBitsToUint(v[c]);
     }
   }
-  return t;
 }
 
 glm::dvec3 evaluate_preintegrated(const PreintegratedTables& t, const glm::dvec3& wi, const glm::dvec3& wr) {

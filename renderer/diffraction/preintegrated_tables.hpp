@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -51,6 +52,8 @@ struct PreintegratedTables {
   std::vector<std::uint32_t> packed;  // preintegrated_word_index(...) addresses it
 
   std::uint64_t bytes() const { return packed.size() * sizeof(std::uint32_t); }
+  // The words the grid holds (packed.size() once built).
+  std::uint64_t word_count() const { return static_cast<std::uint64_t>(nu) * nv * terms * words; }
 };
 
 // Storage and size decisions, exposed for tests and for the error message before any allocation.
@@ -63,7 +66,17 @@ struct PreintegratedLayout {
 PreintegratedLayout preintegrated_layout(const SpectralTables& tables, const WavelengthSamples& samples,
                                          const PreintegratedDomain& domain, const PreintegrationSettings& settings);
 
-// Throws facet::Error (one line, with the sizes) when the tables would exceed max_bytes, before building them.
+// Every field of the tables but the arrays (scale and packed stay empty), as the build sets them.
+// Throws facet::Error (one line, with the sizes) when the tables would exceed max_bytes.
+PreintegratedTables preintegrated_header(const SpectralTables& tables, const WavelengthSamples& samples,
+                                         const PreintegratedDomain& domain, const PreintegrationSettings& settings);
+
+// The build into memory the caller owns (a mapped device buffer: no copy of the tables on the way to
+// the device): fills header.scale and writes header.word_count() words to `words`.
+void build_preintegrated_words(const SpectralTables& tables, const WavelengthSamples& samples,
+                               PreintegratedTables& header, std::span<std::uint32_t> words);
+
+// preintegrated_header, then build_preintegrated_words into the tables' own `packed`.
 PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, const WavelengthSamples& samples,
                                                const PreintegratedDomain& domain,
                                                const PreintegrationSettings& settings = {});

@@ -1,6 +1,7 @@
 #include "gpu/diffraction_fast_upload.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -30,40 +31,39 @@ DiffractionMethod scene_diffraction_method(const Scene& scene, const diffraction
   return chosen.value_or(DiffractionMethod::Spectral);
 }
 
-diffraction::TableCacheUse append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
-                                             std::uint32_t scene_material,
-                                             const diffraction::PreparedDiffraction& prepared, DiffractionMethod method,
-                                             std::uint64_t max_bytes, const std::filesystem::path& table_cache) {
+void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
+                       std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
+                       DiffractionMethod method, std::uint64_t max_bytes) {
   const auto& source = std::get<DiffractionMaterial>(scene.materials[scene_material]);
-  diffraction::TableCacheUse use = diffraction::TableCacheUse::Off;
   if (method == DiffractionMethod::Preintegrated) {
-    const std::uint64_t used = data.preintegrated_words.size() * sizeof(std::uint32_t);
-    diffraction::PreintegrationSettings settings;
-    settings.tolerance = kPreintegrationTolerance;
-    settings.max_bytes = max_bytes > used ? max_bytes - used : 0;
-    diffraction::PreintegratedTables t;
+    const std::uint64_t used = data.preintegrated_word_count * sizeof(std::uint32_t);
+    PendingTables pending{
+        scene.material_names[scene_material], &prepared, diffraction_view_domain(scene, scene_material), {}, {},
+        data.preintegrated_word_count};
+    pending.settings.tolerance = kPreintegrationTolerance;
+    pending.settings.max_bytes = max_bytes > used ? max_bytes - used : 0;
     try {
-      auto cached = diffraction::cached_preintegrated_tables(table_cache, prepared.tables, prepared.samples,
-                                                             diffraction_view_domain(scene, scene_material), settings);
-      t = std::move(cached.tables);
-      use = cached.use;
+      pending.header =
+          diffraction::preintegrated_header(prepared.tables, prepared.samples, pending.domain, pending.settings);
     } catch (const Error& e) {
-      throw Error("diffraction material '" + scene.material_names[scene_material] + "': " + e.what());
+      throw Error("diffraction material '" + pending.material + "': " + e.what());
     }
+    const diffraction::PreintegratedTables& t = pending.header;
     material.preintegrated_grid = glm::vec4(glm::vec2(t.origin), glm::vec2(t.spacing));
     material.preintegrated_shape = glm::ivec4(t.nu, t.nv, t.terms, t.words);
     material.preintegrated_scalars = glm::vec4(t.w_centre, t.floor_lambda_nm, t.sigma_nm, t.hs_nm);
-    material.fast_offsets.x = static_cast<std::uint32_t>(data.preintegrated_words.size());
+    material.fast_offsets.x = static_cast<std::uint32_t>(data.preintegrated_word_count);
     material.fast_offsets.y = static_cast<std::uint32_t>(data.preintegrated_scales.size());
     material.fast_scalars.x = static_cast<float>(t.R0);
     data.cell_words = std::max(data.cell_words, preintegrated_cell_words(t.nu, t.terms, t.words));
-    data.preintegrated_words.insert(data.preintegrated_words.end(), t.packed.begin(), t.packed.end());
-    data.preintegrated_scales.insert(data.preintegrated_scales.end(), t.scale.begin(), t.scale.end());
+    data.preintegrated_word_count += t.word_count();
+    data.preintegrated_scales.resize(data.preintegrated_scales.size() + t.terms);
+    data.preintegrated.push_back(std::move(pending));
   }
   if (method == DiffractionMethod::Orders) {
     const diffraction::OrderWavelengths plan = diffraction::plan_order_wavelengths(
         *source.grating, prepared.tables, source.tolerance, source.illuminant, prepared.samples);
-    if (!plan.restricted) return use;  // fast_scalars.z = 0: the pass runs the spectral path
+    if (!plan.restricted) return;  // fast_scalars.z = 0: the pass runs the spectral path
     const long iterations = order_loop_iterations(plan, prepared.tables);
     if (iterations + kTraceLoopReserve > kLoopIterationLimit)
       throw Error("diffraction material '" + scene.material_names[scene_material] + "': the orders path may need " +
@@ -80,7 +80,42 @@ diffraction::TableCacheUse append_fast_paths(FastPathData& data, GpuDiffractionM
     material.fast_scalars.z = 1.0f;
     for (const glm::dvec3& o : plan.observer) data.observer.emplace_back(glm::vec3(o), 0.0f);
   }
-  return use;
+}
+
+PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data, std::uint64_t binding_words,
+                                              const std::filesystem::path& table_cache) {
+  PreintegratedWords result{{},
+                            slice_preintegrated_words(data.preintegrated_word_count, data.cell_words, binding_words)};
+  for (const auto& [begin, end] : result.slices.ranges)
+    result.buffers.push_back(vk::Buffer::of<std::uint32_t>(context, end - begin));
+  if (data.preintegrated.empty()) return result;
+  // Where the words are read or built: the binding itself when the host sees it, else a staging buffer.
+  const bool direct = result.buffers.size() == 1 && result.buffers[0].mapped();
+  std::optional<vk::Buffer> staging;
+  if (!direct) staging.emplace(vk::Buffer::staging(context, data.preintegrated_word_count * sizeof(std::uint32_t)));
+  auto* words = static_cast<std::uint32_t*>(direct ? result.buffers[0].mapped() : staging->mapped());
+  const std::uint64_t cache_bytes = table_cache.empty() ? 0 : diffraction::table_cache_max_bytes();
+  std::uint64_t scale_offset = 0;
+  for (PendingTables& p : data.preintegrated) {
+    diffraction::TableCacheUse use;
+    try {
+      use = diffraction::cached_preintegrated_words(table_cache, p.prepared->tables, p.prepared->samples, p.domain,
+                                                    p.settings, p.header,
+                                                    {words + p.word_offset, p.header.word_count()}, cache_bytes);
+    } catch (const Error& e) {
+      throw Error("diffraction material '" + p.material + "': " + e.what());
+    }
+    std::copy(p.header.scale.begin(), p.header.scale.end(), data.preintegrated_scales.begin() + scale_offset);
+    scale_offset += p.header.scale.size();
+    if (use == diffraction::TableCacheUse::Miss || result.use == diffraction::TableCacheUse::Off) result.use = use;
+  }
+  if (staging)
+    for (size_t j = 0; j < result.buffers.size(); ++j) {
+      const auto& [begin, end] = result.slices.ranges[j];
+      if (end > begin)
+        result.buffers[j].copy_from(*staging, (end - begin) * sizeof(std::uint32_t), begin * sizeof(std::uint32_t));
+    }
+  return result;
 }
 
 }  // namespace facet::gpu

@@ -13,7 +13,10 @@
 #include "diffraction/preintegrated_cache.hpp"
 #include "diffraction/prepared_diffraction.hpp"
 #include "gpu/diffraction_layout.hpp"
+#include "gpu/preintegrated_slices.hpp"
 #include "scene/scene.hpp"
+#include "vk/buffer.hpp"
+#include "vk/context.hpp"
 
 namespace facet::gpu {
 
@@ -27,22 +30,44 @@ constexpr double kPreintegrationTolerance = 1e-2;
 diffraction::DiffractionMethod scene_diffraction_method(const Scene& scene,
                                                         const diffraction::DiffractionSettings& settings);
 
+// One material's `preintegrated` tables, placed in the words (word_offset) and scales before they
+// are read or built (upload_preintegrated_words).
+struct PendingTables {
+  std::string material;  // its name, for errors
+  const diffraction::PreparedDiffraction* prepared = nullptr;
+  diffraction::PreintegratedDomain domain;
+  diffraction::PreintegrationSettings settings;
+  diffraction::PreintegratedTables header;  // preintegrated_header's
+  std::uint64_t word_offset = 0;
+};
+
 struct FastPathData {
-  std::vector<std::uint32_t> preintegrated_words;
-  std::vector<float> preintegrated_scales;
-  std::vector<glm::vec4> observer;  // XYZ per nm (xyz_density), w unused
-  std::uint64_t cell_words = 0;     // the most words one cell of any preintegrated table spans
+  std::vector<PendingTables> preintegrated;
+  std::uint64_t preintegrated_word_count = 0;  // of all materials' tables
+  std::vector<float> preintegrated_scales;     // placed with the tables, filled by upload_preintegrated_words
+  std::vector<glm::vec4> observer;             // XYZ per nm (xyz_density), w unused
+  std::uint64_t cell_words = 0;                // the most words one cell of any preintegrated table spans
 };
 
 // Fills material's preintegrated_* / order_* / fast_* fields for `method` (the others stay zero)
-// and appends its tables to `data`. The preintegrated tables are refused (facet::Error, one line
-// with the sizes) when `data` would exceed max_bytes of device memory; a grating that is not periodic gets
-// periodic = 0, and the pass then runs the spectral path for it under `orders`. The tables are read
-// from and kept in `table_cache` (empty: none); the result says whether they came from it.
-diffraction::TableCacheUse append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
-                                             std::uint32_t scene_material,
-                                             const diffraction::PreparedDiffraction& prepared,
-                                             diffraction::DiffractionMethod method, std::uint64_t max_bytes,
-                                             const std::filesystem::path& table_cache);
+// and appends its data to `data`: the `orders` tables, or the place of the preintegrated tables, which
+// are refused (facet::Error, one line with the sizes) when `data` would exceed max_bytes of device memory.
+// A grating that is not periodic gets periodic = 0, and the pass then runs the spectral path for it
+// under `orders`. `prepared` must outlive `data`.
+void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
+                       std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
+                       diffraction::DiffractionMethod method, std::uint64_t max_bytes);
+
+struct PreintegratedWords {
+  std::vector<vk::Buffer> buffers;  // one per slice
+  PreintegratedSlices slices;
+  diffraction::TableCacheUse use = diffraction::TableCacheUse::Off;  // Hit: every table came from the cache
+};
+
+// The tables placed in `data`, read from `table_cache` (empty: none) or built, straight into the word
+// bindings' memory when the device maps it and one binding holds them (lavapipe), else into one staging
+// buffer copied to the bindings; fills data.preintegrated_scales. The bindings hold at most binding_words.
+PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data, std::uint64_t binding_words,
+                                              const std::filesystem::path& table_cache);
 
 }  // namespace facet::gpu

@@ -51,8 +51,6 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
                               sizeof(std::uint32_t) * binding_words * FACET_RENDER_PREINTEGRATED_SLICES);
   const diffraction::DiffractionMethod method = scene_diffraction_method(scene, settings);
   const auto all = diffraction::prepare_scene_diffraction(scene, settings);
-  const std::filesystem::path table_cache = diffraction::table_cache_dir();
-  diffraction::TableCacheUse cache_use = diffraction::TableCacheUse::Off;
   for (size_t i = 0; i < all.size(); ++i) {
     const auto& prepared = all[i];
     if (!prepared) continue;
@@ -69,9 +67,7 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
     GpuDiffractionMaterial entry{};  // the fast paths' fields stay zero unless their method fills them
     entry.table = table_info(prepared->tables);
     entry.offsets = glm::uvec4(coefficients.size(), wavelengths.size(), s.lambda_nm.size(), 0);
-    const diffraction::TableCacheUse use =
-        append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method, table_memory, table_cache);
-    if (use == diffraction::TableCacheUse::Miss || cache_use == diffraction::TableCacheUse::Off) cache_use = use;
+    append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method, table_memory);
     materials.push_back(entry);
     most_wavelengths = std::max(most_wavelengths, static_cast<int>(s.lambda_nm.size()));
     most_taylor = std::max(most_taylor, prepared->tables.N);
@@ -85,23 +81,21 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
   if (bytes > coefficient_limit)
     throw Error("the spectral tables of this scene (" + format_mib(bytes) + ") exceed the device's texel buffer of " +
                 format_mib(coefficient_limit) + "; use gratings with fewer samples or a larger tolerance");
+  PreintegratedWords words = upload_preintegrated_words(context, fast, binding_words, diffraction::table_cache_dir());
   // Placeholders where a method has no data (a buffer cannot be empty).
   if (fast.preintegrated_scales.empty()) fast.preintegrated_scales.push_back(0.0f);
   if (fast.observer.empty()) fast.observer.emplace_back(0.0f);
   DiffractionBuffers buffers{vk::Buffer::from(context, std::span<const glm::vec2>(coefficients)),
                              vk::Buffer::from(context, std::span<const GpuDiffractionMaterial>(materials)),
                              vk::Buffer::from(context, std::span<const glm::vec4>(wavelengths)),
-                             {},
-                             slice_preintegrated_words(fast.preintegrated_words.size(), fast.cell_words, binding_words),
+                             std::move(words.buffers),
+                             std::move(words.slices),
                              vk::Buffer::from(context, std::span<const float>(fast.preintegrated_scales)),
                              vk::Buffer::from(context, std::span<const glm::vec4>(fast.observer)),
                              method,
                              most_wavelengths,
                              most_taylor,
-                             cache_use};
-  const std::span<const uint32_t> words(fast.preintegrated_words);
-  for (const auto& [begin, end] : buffers.preintegrated_slices.ranges)
-    buffers.preintegrated_words.push_back(vk::Buffer::from(context, words.subspan(begin, end - begin)));
+                             words.use};
   while (buffers.preintegrated_words.size() < FACET_RENDER_PREINTEGRATED_SLICES)
     buffers.preintegrated_words.push_back(vk::Buffer::from(context, std::span<const uint32_t>()));
   return buffers;

@@ -50,6 +50,10 @@ Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, b
   }
 }
 
+Buffer Buffer::staging(Context& context, VkDeviceSize bytes) {
+  return Buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+}
+
 Buffer::Buffer(Buffer&& other) noexcept
     : context_(other.context_),
       size_(other.size_),
@@ -84,6 +88,12 @@ void Buffer::copy(VkBuffer from, VkBuffer to, VkDeviceSize bytes, VkDeviceSize f
     VkBufferCopy region{from_offset, to_offset, bytes};
     vkCmdCopyBuffer(cmd, from, to, 1, &region);
   });
+}
+
+void Buffer::copy_from(const Buffer& source, VkDeviceSize bytes, VkDeviceSize source_offset, VkDeviceSize offset) {
+  if (source_offset + bytes > source.size_ || offset + bytes > size_)
+    throw Error("internal: a copy beyond the end of a Vulkan buffer");
+  copy(source.buffer_, buffer_, bytes, source_offset, offset);
 }
 
 void Buffer::upload(const void* data, VkDeviceSize bytes, VkDeviceSize offset) {

@@ -5,6 +5,8 @@
 // storage memory is not host-visible, upload and download go through a staging buffer.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -32,18 +34,31 @@ class Buffer {
   Buffer(const Buffer&) = delete;
   Buffer& operator=(const Buffer&) = delete;
 
-  // Creates a buffer holding `items` (at least one element of storage, so that empty
-  // arrays can still be bound). Its texels are one element of 4 or 8 bytes, else 16 bytes.
+  // Creates a buffer of `count` elements of T, not initialised (at least one element of storage, so
+  // that empty arrays can still be bound). Its texels are one element of 4 or 8 bytes, else 16 bytes.
   template <class T>
-  static Buffer from(Context& context, std::span<const T> items) {
-    Buffer buffer(context, sizeof(T) * (items.empty() ? 1 : items.size()));
-    if (!items.empty()) buffer.upload(items.data(), items.size_bytes());
+  static Buffer of(Context& context, std::size_t count) {
+    Buffer buffer(context, sizeof(T) * std::max<std::size_t>(count, 1));
     buffer.texel_bytes_ = sizeof(T) == 4 || sizeof(T) == 8 ? sizeof(T) : 16;
     return buffer;
   }
+  // Creates a buffer holding `items`, as `of`.
+  template <class T>
+  static Buffer from(Context& context, std::span<const T> items) {
+    Buffer buffer = of<T>(context, items.size());
+    if (!items.empty()) buffer.upload(items.data(), items.size_bytes());
+    return buffer;
+  }
+  // A host-visible buffer to fill through mapped() and copy_from into another.
+  static Buffer staging(Context& context, VkDeviceSize bytes);
 
   void upload(const void* data, VkDeviceSize bytes, VkDeviceSize offset = 0);
   void download(void* data, VkDeviceSize bytes, VkDeviceSize offset = 0) const;
+  // Copies `bytes` of `source` from source_offset to this buffer at offset, on the device.
+  void copy_from(const Buffer& source, VkDeviceSize bytes, VkDeviceSize source_offset, VkDeviceSize offset = 0);
+  // The buffer's memory, mapped on the host: write to it directly instead of uploading a copy. Null
+  // when the memory is not host-visible.
+  void* mapped() const { return mapped_; }
 
   VkBuffer handle() const { return buffer_; }
   // A view of the whole buffer as texels of texel_bytes() (R32UI, RG32UI or RGBA32UI; made on first use,

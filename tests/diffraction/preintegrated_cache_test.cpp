@@ -2,12 +2,14 @@
 // (docs/diffraction_fast_paths.md, "Precompute" and "Table cache"): the parallel build is the serial
 // one bit for bit; a second build of the same inputs is read from the cache and equals a fresh
 // build; a changed input misses; a corrupt or truncated file is rebuilt; an unwritable cache costs
-// a warning, not the tables.
+// a warning, not the tables; the folder is kept within its bound, least recently used tables first.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +18,7 @@
 
 #include <tbb/global_control.h>
 
+#include "common/error.hpp"
 #include "diffraction/cie_tables.hpp"
 #include "diffraction/preintegrated_cache.hpp"
 #include "diffraction_cases.hpp"
@@ -175,6 +178,85 @@ TEST(PreintegratedCache, AnUnwritableCacheStillGivesTheTables) {
   expect_same_tables(t.tables, build_preintegrated_tables(in.tables, in.samples, in.domain));
   EXPECT_EQ(err.rfind("facet: warning: ", 0), 0u) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+}
+
+// A file of `bytes` bytes last used `age` seconds ago.
+void table_file(const fs::path& path, size_t bytes, int age) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << std::string(bytes, 'x');
+  fs::last_write_time(path, fs::file_time_type::clock::now() - std::chrono::seconds(age));
+}
+
+std::vector<std::string> names_in(const fs::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(PreintegratedCache, EvictionDeletesTheLeastRecentlyUsedTablesDownToTheBound) {
+  CacheFolder folder("evict");
+  table_file(folder.path / "a.tables", 100, 40);
+  table_file(folder.path / "b.tables", 100, 10);
+  table_file(folder.path / "c.tables", 100, 30);
+  table_file(folder.path / "d.tables", 100, 20);
+  table_file(folder.path / ".d.tables.tmp-123456", 1000, 50);  // a writer's temporary: not a table file
+  evict_table_files(folder.path, 250, folder.path / "b.tables");
+  // 400 bytes of tables: the oldest two go (a, then c), leaving 200 <= 250.
+  EXPECT_EQ(names_in(folder.path), (std::vector<std::string>{".d.tables.tmp-123456", "b.tables", "d.tables"}));
+  // The file just written stays even when it alone exceeds the bound; everything older goes.
+  evict_table_files(folder.path, 50, folder.path / "d.tables");
+  EXPECT_EQ(names_in(folder.path), (std::vector<std::string>{".d.tables.tmp-123456", "d.tables"}));
+  evict_table_files(folder.path / "missing", 50, {});  // no folder: nothing to do
+}
+
+// Through the cache: with room for two tables, a third evicts the least recently used, and a hit
+// counts as a use.
+TEST(PreintegratedCache, TheCacheKeepsItsBound) {
+  const Inputs in = inputs(kCrossed);
+  CacheFolder folder("bound");
+  PreintegrationSettings a, b, c;
+  a.tolerance = 1e-2, b.tolerance = 1.5e-2, c.tolerance = 2e-2;
+  const auto use = [&](const PreintegrationSettings& s, std::uint64_t bound) {
+    return cached_preintegrated_tables(folder.path, in.tables, in.samples, in.domain, s, bound).use;
+  };
+  const std::uint64_t unbounded = std::uint64_t{1} << 40;
+  ASSERT_EQ(use(a, unbounded), TableCacheUse::Miss);
+  const fs::path tables = folder.path / "preintegrated";
+  const std::uint64_t first = fs::file_size(folder.only_file());
+  ASSERT_EQ(use(b, unbounded), TableCacheUse::Miss);
+  std::uint64_t two = 0;
+  for (const auto& entry : fs::directory_iterator(tables)) {
+    two += entry.file_size();
+    // Older than any later use, whatever the clock's granularity.
+    fs::last_write_time(entry.path(), fs::last_write_time(entry.path()) - std::chrono::seconds(60));
+  }
+  ASSERT_GT(two, first);
+  EXPECT_EQ(use(a, two), TableCacheUse::Hit);   // a is now the more recently used
+  ASSERT_EQ(use(c, two), TableCacheUse::Miss);  // c needs room: b goes (c is smaller than b: 2 files fit)
+  EXPECT_EQ(names_in(tables).size(), 2u);
+  EXPECT_EQ(use(a, two), TableCacheUse::Hit);
+  EXPECT_EQ(use(c, two), TableCacheUse::Hit);
+  EXPECT_EQ(use(b, two), TableCacheUse::Miss);
+}
+
+TEST(PreintegratedCache, BoundFromTheEnvironment) {
+  const char* saved = std::getenv("FACET_CACHE_MAX_MIB");
+  const std::optional<std::string> value = saved ? std::optional<std::string>(saved) : std::nullopt;
+  ::unsetenv("FACET_CACHE_MAX_MIB");
+  EXPECT_EQ(table_cache_max_bytes(), std::uint64_t{2} << 30);
+  ::setenv("FACET_CACHE_MAX_MIB", "300", 1);
+  EXPECT_EQ(table_cache_max_bytes(), std::uint64_t{300} << 20);
+  for (const char* bad : {"", "0", "-5", "12x", "1.5", "huge"}) {
+    ::setenv("FACET_CACHE_MAX_MIB", bad, 1);
+    try {
+      table_cache_max_bytes();
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("FACET_CACHE_MAX_MIB"), std::string::npos) << e.what();
+    }
+  }
+  value ? ::setenv("FACET_CACHE_MAX_MIB", value->c_str(), 1) : ::unsetenv("FACET_CACHE_MAX_MIB");
 }
 
 TEST(PreintegratedCache, FolderFromTheEnvironment) {

@@ -94,9 +94,7 @@ TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine
   gpu::FastPathData data;
   gpu::GpuDiffractionMaterial entry{};
   try {
-    gpu::append_fast_paths(
-        data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096,
-        std::filesystem::path(FACET_BINARY_DIR) / "refused_tables_cache");  // refused before any lookup
+    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096);
     FAIL() << "4 KiB of tables accepted";
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -104,7 +102,8 @@ TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine
     EXPECT_NE(message.find("grating"), std::string::npos) << message;  // names the material
     EXPECT_NE(message.find("MiB"), std::string::npos) << message;
   }
-  EXPECT_TRUE(data.preintegrated_words.empty());
+  EXPECT_TRUE(data.preintegrated.empty());
+  EXPECT_EQ(data.preintegrated_word_count, 0u);
 }
 
 // F.13: a crossed grating of 2.5 um periods at tolerance 1e-6 with 64 Taylor terms may need more
@@ -123,7 +122,7 @@ TEST(DiffractionFastPathsRender, OrdersBeyondTheLoopLimitAreRefusedWithOneLine) 
   gpu::FastPathData data;
   gpu::GpuDiffractionMaterial entry{};
   try {
-    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Orders, 1u << 30, {});
+    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Orders, 1u << 30);
     FAIL() << "orders accepted";
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -198,6 +197,21 @@ TEST(DiffractionFastPathsRender, SecondRenderReadsTheTablesFromTheCache) {
   const auto [rebuilt, again] = render(cache);
   EXPECT_EQ(again, "miss");
   expect_equal(rebuilt, built);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(DiffractionFastPathsRender, ABadCacheBoundIsOneLineAndNoFile) {
+  const std::filesystem::path dir = std::filesystem::path(FACET_BINARY_DIR) / "render_fast_paths_bad_bound";
+  std::filesystem::remove_all(dir);
+  const std::filesystem::path out = dir / "frame.exr";
+  const auto r = test::run_command("FACET_CACHE_MAX_MIB=lots FACET_CACHE_DIR='" + (dir / "cache").string() + "' " +
+                                   std::string(FACET_EXECUTABLE) + " render " + kPlate.string() +
+                                   " --width 8 --height 8 --diffraction preintegrated -o " + out.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.err.rfind("facet: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("FACET_CACHE_MAX_MIB"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
   std::filesystem::remove_all(dir);
 }
 

@@ -46,6 +46,23 @@ TEST(VkRuntime, BufferRoundTrip) {
   EXPECT_EQ(values, back);
 }
 
+// A staging buffer filled through its mapping and copied on the device into part of another buffer
+// (the path of tables too large for one binding, or of device memory the host cannot see).
+TEST(VkRuntime, StagingCopyLandsAtTheOffset) {
+  auto context = test::make_validated_context();
+  vk::Buffer staging = vk::Buffer::staging(*context, 400 * sizeof(float));
+  ASSERT_NE(staging.mapped(), nullptr);
+  auto* source = static_cast<float*>(staging.mapped());
+  std::iota(source, source + 400, 1.0f);
+  std::vector<float> zeros(300, 0.0f);
+  auto buffer = vk::Buffer::from(*context, std::span<const float>(zeros));
+  buffer.copy_from(staging, 200 * sizeof(float), 100 * sizeof(float), 50 * sizeof(float));  // values 101..300
+  std::vector<float> back(300);
+  buffer.download(back.data(), back.size() * sizeof(float));
+  for (int i = 0; i < 300; ++i) EXPECT_EQ(back[i], i >= 50 && i < 250 ? i + 51.0f : 0.0f) << i;
+  EXPECT_THROW(buffer.copy_from(staging, 300 * sizeof(float), 200 * sizeof(float)), Error);  // past the source
+}
+
 TEST(VkRuntime, KernelAppliesSpecializationAndPushConstants) {
   auto context = test::make_validated_context();
   const uint32_t count = 1000;  // not a multiple of the workgroup size: the guard matters
