@@ -24,6 +24,9 @@ struct RenderMethod {
   int samples_per_axis = 1;
   diffraction::DiffractionSettings diffraction{};  // wavelength / Taylor-term overrides of diffraction materials
   AovSet aovs{};  // the auxiliary channels the pass writes (`--aov`; not part of name())
+  // Each pixel's work instead of its colour: (FMA-equivalents, texel fetches, 0) summed over its
+  // samples (gpu/work_counter.hpp; not part of name()).
+  bool counts_work = false;
 
   // Throws facet::Error naming the known methods for anything else.
   static RenderMethod parse(const std::string& text);
