@@ -13,7 +13,7 @@ void add_info_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<DeviceOptions>();
   auto probe = std::make_shared<bool>(false);
   add_device_options(*command, *options);
-  command->add_flag("--probe", *probe, "Also measure the device's float32 FMA and texel-fetch throughput (about 2 s)");
+  command->add_flag("--probe", *probe, "Also measure the device's float32 FMA and texel-fetch throughput (about 0.5 s on a quiet host)");
   command->callback([&action, options, probe] {
     action = [options, probe] {
       std::cout << "facet " << FACET_VERSION << " (C++20, " << FACET_BUILD_TYPE << " build)\n";

@@ -8,8 +8,8 @@
 #define FACET_PROBE_BINDING_COUNT 2
 #define FACET_PROBE_WORKGROUP 64
 
-// Each loop iteration of the FMA mode runs one fma on each of 8 independent vec4 chains.
-#define FACET_PROBE_FMAS_PER_ITERATION 32
+// Each loop iteration of the FMA mode runs one fma on each of 4 independent vec4 chains.
+#define FACET_PROBE_FMAS_PER_ITERATION 16
 // Each loop iteration of the texel mode fetches this many texels (independent addresses).
 #define FACET_PROBE_FETCHES_PER_ITERATION 4
 

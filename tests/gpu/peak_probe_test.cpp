@@ -20,8 +20,8 @@ TEST(PeakProbe, EveryInvocationRunsTheFmasTheRateAssumes) {
     const gpu::ProbeShape shape{.workgroups = 8, .iterations = iterations, .dispatches = 1};
     const std::vector<float> counts = gpu::count_probe_fmas(*context, shape);
     ASSERT_EQ(counts.size(), 8u * 64u);
-    // 8 chains of 4 lanes, one fma per lane and iteration: the count written down in the shader.
-    const double per_invocation = 8.0 * 4.0 * iterations;
+    // 4 chains of 4 lanes, one fma per lane and iteration: the count written down in the shader.
+    const double per_invocation = 4.0 * 4.0 * iterations;
     for (float count : counts) ASSERT_EQ(count, per_invocation) << iterations;
     EXPECT_EQ(std::accumulate(counts.begin(), counts.end(), 0.0), gpu::probe_fmas(shape));
     EXPECT_EQ(gpu::probe_texel_reads(shape), 8.0 * 64.0 * iterations * 4.0);
