@@ -10,10 +10,13 @@ layout(binding = FACET_PROBE_BINDING_TEXELS) uniform usamplerBuffer probe_texels
 layout(push_constant) uniform Push { ProbePush probe; };
 
 // Four vec4 chains, no chain reading another: lavapipe runs 8 invocations per AVX2 register, so they
-// are 16 registers of independent FMAs, enough to cover the FMA latency on both ports. The sum is
-// written so that no chain is dead.
+// are 16 registers of independent FMAs, enough to cover the FMA latency on both ports. Each lane
+// starts from its own multiple of `start` (0 when counting), so the JIT cannot merge lanes that it
+// would otherwise see compute the same value. The sum is written so that no chain is dead.
 float fma_chains() {
-  vec4 a0 = vec4(0.0), a1 = a0, a2 = a0, a3 = a0;
+  float s0 = probe.start;
+  vec4 a0 = vec4(0.0, 1.0, 2.0, 3.0) * s0, a1 = vec4(4.0, 5.0, 6.0, 7.0) * s0;
+  vec4 a2 = vec4(8.0, 9.0, 10.0, 11.0) * s0, a3 = vec4(12.0, 13.0, 14.0, 15.0) * s0;
   vec4 b = vec4(probe.multiplier), c = vec4(probe.addend);
   for (uint k = 0u; k < probe.iterations; ++k) {
     a0 = fma(a0, b, c);

@@ -42,8 +42,8 @@ class ProbeKernel {
   }
 
   // Device milliseconds of one dispatch.
-  double run(uint mode, float multiplier, float addend) {
-    const ProbePush push{mode, shape_.iterations, kTexelCount - 1, 0, multiplier, addend, 0.0f, 0.0f};
+  double run(uint mode, float multiplier, float addend, float start) {
+    const ProbePush push{mode, shape_.iterations, kTexelCount - 1, 0, multiplier, addend, start, 0.0f};
     const std::array<const vk::Buffer*, FACET_PROBE_BINDING_COUNT> bindings{&out_, &texels_};
     return kernel_.dispatch(bindings, &push, {shape_.workgroups, 1, 1});
   }
@@ -98,20 +98,20 @@ double probe_texel_reads(const ProbeShape& shape) {
 
 PeakProbe probe_peak(vk::Context& context, const ProbeShape& shape) {
   ProbeKernel kernel(context, shape);
-  kernel.run(FACET_PROBE_MODE_FMA, 1.0f, 1.0f);  // the first dispatch compiles the shader
+  kernel.run(FACET_PROBE_MODE_FMA, 1.0f, 1.0f, 0.0f);  // the first dispatch compiles the shader
   PeakProbe peak;
   peak.shape = shape;
   // A multiplier below 1 keeps the chains finite however long they run.
   peak.fma_per_second =
-      best_rate(shape, probe_fmas(shape), [&] { return kernel.run(FACET_PROBE_MODE_FMA, 0.999f, 1e-3f); });
+      best_rate(shape, probe_fmas(shape), [&] { return kernel.run(FACET_PROBE_MODE_FMA, 0.999f, 1e-3f, 1e-3f); });
   peak.texel_reads_per_second =
-      best_rate(shape, probe_texel_reads(shape), [&] { return kernel.run(FACET_PROBE_MODE_TEXELS, 0.0f, 0.0f); });
+      best_rate(shape, probe_texel_reads(shape), [&] { return kernel.run(FACET_PROBE_MODE_TEXELS, 0.0f, 0.0f, 0.0f); });
   return peak;
 }
 
 std::vector<float> count_probe_fmas(vk::Context& context, const ProbeShape& shape) {
   ProbeKernel kernel(context, shape);
-  kernel.run(FACET_PROBE_MODE_FMA, 1.0f, 1.0f);
+  kernel.run(FACET_PROBE_MODE_FMA, 1.0f, 1.0f, 0.0f);
   return kernel.results();
 }
 

@@ -17,8 +17,8 @@
 #define FACET_PROBE_MODE_TEXELS 1u
 
 // Push constants. FMA mode: every chain runs x = fma(x, multiplier, addend) `iterations` times
-// from 0, so with multiplier 1 and addend 1 each lane ends at exactly `iterations` (below 2^24)
-// and the written sum counts the FMAs the invocation ran. Texel mode: `texel_mask` + 1 texels
+// from its lane's multiple of `start`, so with start 0, multiplier 1 and addend 1 each lane ends at
+// exactly `iterations` (below 2^24) and the written sum counts the FMAs the invocation ran. Texel mode: `texel_mask` + 1 texels
 // (a power of two) are read at scattered addresses.
 struct ProbePush {
   uint mode;
@@ -27,7 +27,7 @@ struct ProbePush {
   uint unused;
   float multiplier;
   float addend;
-  float unused_f0;
+  float start;
   float unused_f1;
 };
 
