@@ -22,6 +22,7 @@ struct BenchCommandOptions {
   std::string methods;
   std::int64_t seed = 1;
   bool no_stability = false;
+  bool no_roofline = false;
 };
 
 // "naive,ss:4" -> {"naive", "ss:4"}; empty items are dropped.
@@ -56,6 +57,7 @@ int run_bench_command(BenchCommandOptions options) {
   check_methods(options.bench.methods);
   options.bench.seed = static_cast<std::uint64_t>(options.seed);
   options.bench.kernel_stability = !options.no_stability;
+  options.bench.roofline = !options.no_roofline;
   options.bench.facet_version = FACET_VERSION;
   options.bench.device = {options.device.device, options.device.validation};
   const report::BenchRun run = report::run_bench(options.bench);
@@ -93,6 +95,8 @@ void add_bench_command(CLI::App& app, Action& action) {
   command->add_option("--height", bench.height, "Image height (default: the width at the scene's aspect)")
       ->check(CLI::Range(1, 16384));
   command->add_flag("--no-stability", options->no_stability, "Skip the kernel-stability section");
+  command->add_flag("--no-roofline", options->no_roofline,
+                    "Skip the host probe and the work counts per pixel (the roofline columns)");
   add_set_option(*command, bench.overrides, "every scene");
   add_device_options(*command, options->device);
   command->callback([&action, options] { action = [options] { return run_bench_command(*options); }; });

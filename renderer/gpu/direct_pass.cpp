@@ -13,6 +13,7 @@
 #include "gpu/adaptive_refinement.hpp"
 #include "gpu/microsurface_upload.hpp"
 #include "gpu/render_layout.hpp"
+#include "gpu/work_counter.hpp"
 #include "gpu/workgroup_order.hpp"
 #include "image/edge_error.hpp"
 #include "render_direct.spv.h"
@@ -38,9 +39,12 @@ bool traces_height_fields(const Scene& scene, const RenderMethod& method) {
 
 // The program of the pass: the one that traces height fields only where the method does
 // (shaders/render/direct_pass.glsl: the tracer costs every pipeline seconds of set-up).
-std::span<const uint32_t> direct_pass_program(const Scene& scene, const RenderMethod& method) {
-  return traces_height_fields(scene, method) ? std::span<const uint32_t>(render_direct_fields_spv)
-                                             : std::span<const uint32_t>(render_direct_spv);
+// Counting work, the program with its counters' increments (gpu/work_counter.hpp).
+std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod& method) {
+  const std::span<const uint32_t> program = traces_height_fields(scene, method)
+                                                ? std::span<const uint32_t>(render_direct_fields_spv)
+                                                : std::span<const uint32_t>(render_direct_spv);
+  return method.counts_work ? instrument_work_counts(program) : std::vector<uint32_t>(program.begin(), program.end());
 }
 
 // Refuses, in one line, height fields whose traversal could pass the shader's loop bound
@@ -79,6 +83,7 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICES, diffraction.preintegrated_slices.count},
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS, diffraction.preintegrated_slices.slice_words},
       {FACET_RENDER_SPEC_AOVS, writes_aovs(method) ? 1u : 0u},
+      {FACET_RENDER_SPEC_COUNTS_WORK, method.counts_work ? 1u : 0u},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};
@@ -132,8 +137,9 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       pixel_list_(vk::Buffer::from(context, std::span<const glm::uvec2>(std::vector<glm::uvec2>(
                                                 method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)))),
       kernel_(timed(timings, "pipeline", [&] {
+        const std::vector<uint32_t> program = direct_pass_program(scene, method);
         return vk::Kernel(context, {.name = "render_direct",
-                                    .spirv = direct_pass_program(scene, method),
+                                    .spirv = program,
                                     .buffer_count = FACET_RENDER_BINDING_COUNT,
                                     .push_constant_bytes = sizeof(GpuTile),
                                     .specialization = specialization(scene, method, diffraction_),

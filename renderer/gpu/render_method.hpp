@@ -38,6 +38,9 @@ struct RenderMethod {
   AovSet aovs{};  // the auxiliary channels the pass writes (`--aov`; not part of name())
   int adaptive_samples_per_axis = 0;  // filtered:adaptive's K (0: not adaptive)
   AdaptiveBudget adaptive{};          // `--adaptive-error`, `--adaptive-time` (not part of name())
+  // Each pixel's work instead of its colour: (FMA-equivalents, texel fetches, 0) summed over its
+  // samples (gpu/work_counter.hpp; not part of name()).
+  bool counts_work = false;
 
   // Throws facet::Error naming the known methods for anything else.
   static RenderMethod parse(const std::string& text);

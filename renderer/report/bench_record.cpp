@@ -2,6 +2,17 @@
 
 namespace facet::report {
 
+std::optional<double> BenchRecord::roofline_ms() const {
+  if (!probe_fma_per_second || !work_fma_per_pixel || !(*probe_fma_per_second > 0.0)) return std::nullopt;
+  return 1e3 * static_cast<double>(width) * height * *work_fma_per_pixel / *probe_fma_per_second;
+}
+
+std::optional<double> BenchRecord::device_vs_roofline() const {
+  const std::optional<double> limit = roofline_ms();
+  if (!limit || !timing.has_gpu_time || !(*limit > 0.0)) return std::nullopt;
+  return timing.gpu_ms.median / *limit;
+}
+
 nlohmann::json to_json(const BenchRecord& r) {
   nlohmann::json json = {
       {"scene", r.scene},   {"scene_file", r.scene_file}, {"set", r.overrides},   {"method", r.method},
@@ -27,6 +38,12 @@ nlohmann::json to_json(const BenchRecord& r) {
   json.update(facet::to_json(r.comparison));
   json["image"] = r.image;
   json["heatmap"] = r.heatmap;
+  auto optional_number = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  json["probe_fma_per_second"] = optional_number(r.probe_fma_per_second);
+  json["work_fma_per_pixel"] = optional_number(r.work_fma_per_pixel);
+  json["reads_per_pixel"] = optional_number(r.reads_per_pixel);
+  json["roofline_ms"] = optional_number(r.roofline_ms());
+  json["device_vs_roofline"] = optional_number(r.device_vs_roofline());
   if (r.error_estimate) json.update(to_json(*r.error_estimate));
   return json;
 }

@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "common/progress.hpp"
 #include "frames/prepared_frames.hpp"
+#include "gpu/work_per_pixel.hpp"
 #include "image/atomic_file.hpp"
 #include "image/flip.hpp"
 #include "image/heatmap.hpp"
@@ -30,6 +31,8 @@ namespace facet::report {
 namespace {
 
 constexpr int kQuickWidth = 160;
+// Work is counted on a frame at most this wide (the bench's aspect): the count is per pixel.
+constexpr int kWorkCountWidth = 160;
 constexpr int kThumbnailWidth = 320;
 
 // "ss:4" -> "ss-4": safe in file names and URLs.
@@ -76,7 +79,8 @@ std::optional<ErrorEstimateQuality> judge_estimate(vk::Context& context, const S
 // Times one method on one scene; any failure becomes the record's error.
 BenchRecord measure_method(vk::Context& context, const Scene& scene, const CatalogueEntry& method,
                            const Image& reference, int repeats, const std::filesystem::path& out_dir,
-                           const std::string& scene_name, BenchRecord record, const std::function<void()>& tick) {
+                           const std::string& scene_name, const std::optional<gpu::PeakProbe>& probe, BenchRecord record,
+                           const std::function<void()>& tick) {
   record.method = method.name;
   try {
     // Each method's set-up includes compiling its pipelines, as `facet render` pays it alone.
@@ -95,6 +99,14 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
       tick();
       return gpu_ms;
     });
+    if (probe) {
+      const int width = std::min(reference.width, kWorkCountWidth);
+      const int height = std::max(1, static_cast<int>(std::lround(double(reference.height) * width / reference.width)));
+      const gpu::WorkCount work = gpu::count_work(context, scene, method.render_method(), width, height);
+      record.probe_fma_per_second = probe->fma_per_second;
+      record.work_fma_per_pixel = work.fma_per_pixel;
+      record.reads_per_pixel = work.reads_per_pixel;
+    }
     record.comparison = compare_images(first.image, reference);
     record.error_estimate = judge_estimate(context, scene, method, reference);
     record.image = scene_name + "/" + file_stem(method.name) + ".png";
@@ -163,7 +175,7 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   std::vector<CalibrationCurve> calibration;
   for (std::size_t i = 0; i < methods.size(); ++i) {
     BenchRecord record = measure_method(context, scene, methods[i], reference.image, bench.repeats, options.out_dir,
-                                        run.name, base, [&] { progress.update(++step); });
+                                        run.name, bench.probe, base, [&] { progress.update(++step); });
     step = static_cast<std::int64_t>(i + 1) * (bench.repeats + 1);  // a failed method skips its remaining runs
     progress.update(step);
     if (record.ok()) {
@@ -219,6 +231,7 @@ BenchRun run_bench(const BenchOptions& options) {
   bench.overrides = options.overrides;
   vk::Context context(options.device);
   bench.device = context.info().name;
+  if (options.roofline) bench.probe = gpu::probe_peak(context);
   const std::filesystem::path cache_dir = options.cache_dir.empty() ? options.out_dir / "cache" : options.cache_dir;
 
   for (std::size_t i = 0; i < options.scenes.size(); ++i) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "report/bench_record.hpp"
+#include "gpu/peak_probe.hpp"
 #include "report/kernel_stability.hpp"
 #include "vk/context.hpp"
 
@@ -29,6 +30,7 @@ struct BenchOptions {
   std::vector<std::string> methods;  // empty: the catalogue's applicable ones
   std::vector<std::string> overrides;  // --set PATH=VALUE, applied to every scene
   bool kernel_stability = true;
+  bool roofline = true;  // probe the host's peak and count each method's work per pixel
   std::string facet_version;
   vk::ContextOptions device;
 };
@@ -52,6 +54,7 @@ struct BenchRun {
   int grid = 0, repeats = 0;
   std::uint64_t seed = 1;
   std::vector<std::string> overrides;  // --set, as given
+  std::optional<gpu::PeakProbe> probe;  // the host's peak, measured once per run (unset: --no-roofline)
   std::vector<SceneRun> scenes;
   std::vector<BenchRecord> records;
   std::vector<StabilityRow> stability;

@@ -15,6 +15,13 @@ std::string format_3g(double value) {
 
 std::string format_3g(const std::optional<double>& value) { return value ? format_3g(*value) : "–"; }
 
+std::string probe_summary(const BenchRun& run) {
+  if (!run.probe) return "probe: not run (--no-roofline)";
+  return "probe: " + format_3g(run.probe->fma_per_second * 1e-9) + " G FMA/s, " +
+         format_3g(run.probe->texel_reads_per_second * 1e-9) + " G texel reads/s (float32, best of " +
+         std::to_string(run.probe->shape.dispatches) + " dispatches)";
+}
+
 const std::vector<MetricColumn>& metric_columns() {
   auto spread = [](const Spread& s) { return format_3g(s.min) + "–" + format_3g(s.max); };
   auto gpu_ms = [](const BenchRecord& r) { return r.timing.has_gpu_time ? format_3g(r.timing.gpu_ms.median) : "–"; };
@@ -34,7 +41,11 @@ const std::vector<MetricColumn>& metric_columns() {
       // How the method's own per-pixel error estimate ranks its true error (Spearman; docs/error_estimate.md).
       {"estimate ρ", [](const BenchRecord& r) {
          return r.error_estimate ? format_3g(r.error_estimate->spearman) : std::string("–");
-       }}};
+       }},
+      {"work FMA/px", [](const BenchRecord& r) { return format_3g(r.work_fma_per_pixel); }},
+      {"reads/px", [](const BenchRecord& r) { return format_3g(r.reads_per_pixel); }},
+      {"roofline ms", [](const BenchRecord& r) { return format_3g(r.roofline_ms()); }},
+      {"device/roofline", [](const BenchRecord& r) { return format_3g(r.device_vs_roofline()); }}};
   return columns;
 }
 
@@ -92,6 +103,13 @@ nlohmann::json run_json(const BenchRun& run) {
                          {"f64", optional_number(row.f64)},
                          {"f32", optional_number(row.f32)},
                          {"gpu", optional_number(row.gpu)}});
+  nlohmann::json probe = nullptr;
+  if (run.probe)
+    probe = {{"fma_per_second", run.probe->fma_per_second},
+             {"texel_reads_per_second", run.probe->texel_reads_per_second},
+             {"dispatches", run.probe->shape.dispatches},
+             {"fmas_per_dispatch", gpu::probe_fmas(run.probe->shape)},
+             {"texel_reads_per_dispatch", gpu::probe_texel_reads(run.probe->shape)}};
   return {{"schema", kReportSchema},
           {"machine", run.machine},
           {"device", run.device},
@@ -102,6 +120,7 @@ nlohmann::json run_json(const BenchRun& run) {
           {"repeats", run.repeats},
           {"seed", run.seed},
           {"set", run.overrides},
+          {"probe", probe},
           {"scenes", scenes},
           {"kernel_stability", stability},
           {"exit_status", run.exit_status()}};

@@ -1,7 +1,7 @@
 // The files `facet bench` leaves in its output folder, each written atomically:
 //   results.json  a JSON array of records (bench_record.hpp), one per scene x method
-//   run.json      the machine, device, settings, each scene's reference (cache key, hit) and the
-//                 kernel-stability table
+//   run.json      the machine, device, settings, the host probe's peak, each scene's reference
+//                 (cache key, hit) and the kernel-stability table
 //   report.md     headline, per-scene tables, stability table
 //   index.html    the same with the reference, each method's image and FLIP heat map side by side
 //                 with the heat maps' colour bar, and the speed-vs-error plots inline (their tooltips work)
@@ -44,6 +44,9 @@ struct MetricColumn {
   std::function<std::string(const BenchRecord&)> cell;
 };
 const std::vector<MetricColumn>& metric_columns();
+
+// "probe: 23.1 G FMA/s, 3.2 G texel reads/s (float32, best of 5 dispatches)", or that it did not run.
+std::string probe_summary(const BenchRun& run);
 
 // "12.3", "0.00123", "1.23e+04": three significant digits for tables.
 std::string format_3g(double value);

@@ -144,12 +144,14 @@ std::string report_html(const BenchRun& run) {
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>facet bench report</title><style>"
        << kStyle << "</style></head><body>\n<h1>facet bench report</h1>\n<p>" << xml_escape(run.machine) << "; "
-       << xml_escape(run.device) << "; facet " << xml_escape(run.facet_version) << "; " << run.date << "; "
+       << xml_escape(run.device) << "; " << xml_escape(probe_summary(run)) << "; facet " << xml_escape(run.facet_version) << "; " << run.date << "; "
        << (run.quick ? "--quick" : "full") << " run, reference grid " << run.grid << "×" << run.grid << ", "
        << counted(run.repeats, "timed run")
        << " after a warm-up. Time: median device time per frame (wall time if the device "
        << "has no timestamps); wall: median wall time around each frame; prepare: set-up plus the warm-up frame. "
-       << "Heat maps: per-pixel FLIP against the reference (0 black, 1 yellow).</p>\n";
+       << "Heat maps: per-pixel FLIP against the reference (0 black, 1 yellow). Roofline: a method's counted work "
+       << "per pixel (float arithmetic in FMA-equivalents, texel fetches) at the probe's FMA peak, and the device "
+       << "time over that.</p>\n";
   write_html_headline(html, run);
   for (const SceneRun& scene : run.scenes) write_html_scene(html, run, scene);
   write_html_stability(html, run);

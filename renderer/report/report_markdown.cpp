@@ -18,7 +18,8 @@ std::string table_cell(const std::string& text) {
 
 void write_header(std::ostringstream& md, const BenchRun& run) {
   md << "# facet bench report\n\n"
-     << "- machine: " << run.machine << "\n- device: " << run.device << "\n- facet " << run.facet_version << ", "
+     << "- machine: " << run.machine << "\n- device: " << run.device << "\n- " << probe_summary(run)
+     << "\n- facet " << run.facet_version << ", "
      << run.date << ", " << (run.quick ? "`--quick`" : "full") << " run: reference " << run.grid << "×" << run.grid
      << " jittered rays per pixel, each method rendered once to warm up and then timed over "
      << counted(run.repeats, "run") << "\n\n"
@@ -26,7 +27,10 @@ void write_header(std::ostringstream& md, const BenchRun& run) {
         "median wall time; `min–max` is its spread; `device` is the median device time, `wall` the median wall time "
         "around the call (upload, submissions, read-back), each frame; `prepare` is the one-off set-up (buffers, "
         "precomputed tables, pipeline) plus the warm-up frame. Errors are against the reference, with the metrics of "
-        "`facet compare` (docs/report.md).\n\n";
+        "`facet compare` (docs/report.md). `work FMA/px` and `reads/px` are a method's float arithmetic "
+        "(FMA-equivalents) and texel fetches per pixel, counted by its instrumented render pass; `roofline` is the "
+        "device time of a frame of that work at the probe's FMA peak, `device/roofline` the measured device time "
+        "over it (docs/report.md, the roofline).\n\n";
 }
 
 void write_markdown_headline(std::ostringstream& md, const BenchRun& run) {

@@ -20,6 +20,9 @@
 //                      span and the words each slice starts cells in (render/diffraction_bindings.glsl)
 //   kWritesAovs        the auxiliary outputs (depth, normal, uv, error estimate) are accumulated in
 //                      the pixel buffer after the colours (renderer/gpu/direct_pass.cpp, docs/aov.md)
+//   kCountsWork        each sample's work replaces its colour: (FMA-equivalents, texel fetches, 0, 1),
+//                      counted by increments renderer/gpu/work_counter.hpp adds to the SPIR-V
+//                      (docs/render_speed.md, "Work per pixel"); off, the counters are dead code
 // Tracing, the scene's buffers and each material family's shading live in render/*.glsl.
 // Two programs include this file: render_direct.comp, and render_direct_fields.comp, which defines
 // FACET_HEIGHT_FIELDS and so traces microsurfaces' height fields. Lavapipe compiles every call of
@@ -42,6 +45,7 @@ layout(constant_id = FACET_RENDER_SPEC_HAS_TRIANGLES) const bool kHasTriangles =
 layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICES) const uint kPreintegratedSlices = 1u;
 layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS) const uint kPreintegratedSliceWords = 0xffffffffu;
 layout(constant_id = FACET_RENDER_SPEC_AOVS) const bool kWritesAovs = false;
+layout(constant_id = FACET_RENDER_SPEC_COUNTS_WORK) const bool kCountsWork = false;
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS
@@ -66,6 +70,9 @@ const bool kTracesHeightFields = false;
 // the shading normal (0 on a miss); uv and the texture's error estimate (docs/error_estimate.md).
 vec4 aov_depth_normal = vec4(0.0);
 vec4 aov_uv_error = vec4(0.0);
+// This invocation's work so far (kCountsWork): renderer/gpu/work_counter.hpp finds them by name.
+uint facet_work_fma = 0u;
+uint facet_work_reads = 0u;
 // kappa of eq. 1 (docs/error_estimate.md): the filtered colour's error per unit of the mapped colour's
 // spread over the footprint, fitted on colormap_noise_plane and colormap_objects.
 const float kErrorMismatch = 0.18;
@@ -185,6 +192,7 @@ void main() {
   uint k = tile.stratum.w;
   float step = 1.0 / float(k);
   vec4 sample_value = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
+  if (kCountsWork) sample_value = vec4(float(facet_work_fma), float(facet_work_reads), 0.0, 1.0);
   // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
   // end: the same float operations as averaging them within one invocation.
   vec4 sum = tile.stratum.z != 0u ? pixels[i] + sample_value : sample_value;

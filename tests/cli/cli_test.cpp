@@ -1,5 +1,6 @@
 // The `facet` program end to end: what a user sees on good and bad input.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -141,6 +142,23 @@ TEST_F(Cli, InfoListsTheDevice) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("maxStorageBufferRange"), std::string::npos);
   EXPECT_NE(r.out.find("llvmpipe"), std::string::npos);
+}
+
+// --probe adds the measured rates as two more lines, each a finite positive number; without it,
+// `facet info` prints what it always did.
+TEST_F(Cli, InfoProbeAddsTheMeasuredRates) {
+  const auto plain = run_command(kFacet + " info");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("probe_"), std::string::npos) << plain.out;
+  const auto r = run_command(kFacet + " info --probe");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.substr(0, plain.out.size()), plain.out);
+  for (const std::string key : {"probe_fma_per_second", "probe_texel_reads_per_second"}) {
+    const std::size_t at = r.out.find("  " + key + " ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const double rate = std::stod(r.out.substr(at + key.size() + 2));
+    EXPECT_TRUE(std::isfinite(rate) && rate > 0.0) << key << " = " << rate;
+  }
 }
 
 TEST_F(Cli, HelpWorksForEverySubcommand) {

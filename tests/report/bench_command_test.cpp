@@ -46,9 +46,11 @@ class Bench : public ::testing::Test {
     std::ofstream(dir_ / "tiny.json") << text;
     return dir_ / "tiny.json";
   }
-  test::CommandResult bench(const std::string& arguments) {
+  // Without the roofline (its probe and counting pipelines) unless a test asks for it.
+  test::CommandResult bench(const std::string& arguments, bool roofline = false) {
     return test::run_command(kFacet + " bench '" + (dir_ / "tiny.json").string() + "' --out '" +
-                             (dir_ / "out").string() + "' --quick --width 48 --grid 4 " + arguments);
+                             (dir_ / "out").string() + "' --quick --width 48 --grid 4 " + arguments +
+                             (roofline ? "" : " --no-roofline"));
   }
   json read_json(const std::string& name) { return json::parse(test::read_text(dir_ / "out" / name)); }
   bool reference_cache_hit() { return read_json("run.json")["scenes"][0]["reference_cache_hit"].get<bool>(); }
@@ -116,7 +118,9 @@ void expect_html_report(const std::string& html, const json& results) {
     std::vector<std::string> cells = {
         number(r["time_ms"]), number(r["time_ms_min"]) + "–" + number(r["time_ms_max"]), number(r["gpu_ms"]),
         number(r["wall_ms"]), number(r["wall_ms_min"]) + "–" + number(r["wall_ms_max"]), number(r["prepare_ms"])};
-    for (const char* key : {"rmse", "rel_mse", "psnr", "max_abs", "ssim", "flip"}) cells.push_back(number(r[key]));
+    for (const char* key : {"rmse", "rel_mse", "psnr", "max_abs", "ssim", "flip", "work_fma_per_pixel",
+                            "reads_per_pixel", "roofline_ms", "device_vs_roofline"})
+      cells.push_back(number(r[key]));
     std::string row = "<tr><td>" + r["method"].get<std::string>() + "</td>";
     for (const std::string& cell : cells) row += "<td>" + cell + "</td>";
     EXPECT_NE(html.find(row), std::string::npos) << row;
@@ -202,6 +206,33 @@ TEST_F(Bench, QuickRunWritesAValidReport) {
   for (const json& record : results) EXPECT_EQ(record["schema"], 1);
 }
 
+// The roofline (docs/report.md): the probe's peak in run.json, the record's work per pixel, and
+// roofline_ms and device_vs_roofline as their definitions give them; the header and columns in report.md.
+TEST_F(Bench, RecordsTheProbeAndTheRoofline) {
+  write_scene();
+  ASSERT_EQ(bench("--no-stability --methods naive", true).exit_code, 0);
+  const json run = read_json("run.json");
+  ASSERT_TRUE(run["probe"].is_object()) << run.dump();
+  const double peak = run["probe"]["fma_per_second"].get<double>();
+  EXPECT_TRUE(std::isfinite(peak) && peak > 0.0) << peak;
+  EXPECT_GT(run["probe"]["texel_reads_per_second"].get<double>(), 0.0);
+  const json results = read_json("results.json");
+  ASSERT_EQ(results.size(), 1u);
+  const json& r = results[0];
+  EXPECT_EQ(r["probe_fma_per_second"].get<double>(), peak);
+  const double work = r["work_fma_per_pixel"].get<double>();
+  EXPECT_GT(work, 0.0) << r.dump();
+  EXPECT_GT(r["reads_per_pixel"].get<double>(), 0.0) << r.dump();
+  const double roofline = 1e3 * 48.0 * 27.0 * work / peak;
+  EXPECT_NEAR(r["roofline_ms"].get<double>(), roofline, 1e-9 * roofline);
+  const double ratio = r["gpu_ms"].get<double>() / roofline;
+  EXPECT_NEAR(r["device_vs_roofline"].get<double>(), ratio, 1e-9 * ratio);
+  const std::string md = test::read_text(dir_ / "out" / "report.md");
+  EXPECT_NE(md.find("- probe: "), std::string::npos);
+  EXPECT_NE(md.find(" G FMA/s"), std::string::npos);
+  EXPECT_NE(md.find("| device/roofline |"), std::string::npos);
+}
+
 // A mistyped method fails the command before the (slow) reference renders: nothing is written.
 TEST_F(Bench, AnUnknownMethodFailsBeforeTheReference) {
   write_scene();
@@ -260,7 +291,7 @@ TEST_F(Bench, AReusedOutFolderIsCleanedOrRefused) {
   fs::copy_file(dir_ / "tiny.json", dir_ / "other.json");
   const auto other =
       test::run_command(kFacet + " bench '" + (dir_ / "other.json").string() + "' --out '" + (dir_ / "out").string() +
-                        "' --quick --width 48 --grid 4 --no-stability --methods naive");
+                        "' --quick --width 48 --grid 4 --no-stability --no-roofline --methods naive");
   ASSERT_EQ(other.exit_code, 0) << other.err;
   EXPECT_FALSE(fs::exists(dir_ / "out" / "tiny")) << "the previous report's scene folder stays";
   EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / "other" / "naive.png"));
@@ -293,7 +324,7 @@ TEST_F(Bench, ABrokenSceneFailsTheRunButNotTheOtherScenes) {
   std::ofstream(dir_ / "broken.json") << "{\"camera\": ";
   const auto r = test::run_command(kFacet + " bench '" + (dir_ / "broken.json").string() + "' '" +
                                    (dir_ / "tiny.json").string() + "' --out '" + (dir_ / "out").string() +
-                                   "' --quick --width 48 --grid 2 --no-stability --methods naive");
+                                   "' --quick --width 48 --grid 2 --no-stability --no-roofline --methods naive");
   EXPECT_EQ(r.exit_code, 1);
   const json results = read_json("results.json");
   ASSERT_EQ(results.size(), 2u);
