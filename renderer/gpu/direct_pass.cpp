@@ -130,6 +130,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       adaptive_samples_per_axis_(method.adaptive_samples_per_axis),
       adaptive_budget_(method.adaptive),
       writes_aovs_(writes_aovs(method)),
+      counts_work_(method.counts_work),
       buffers_(timed(timings, "upload",
                      [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
       diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
@@ -205,7 +206,7 @@ void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& imag
       const vec4 pixel = sums[j];
       // The edge term of the first pass, over K (eq. 3), on top of the strata's own texture term.
       const float edge = aovs[at].error - texture_error[at];
-      image.set(at, glm::vec3(pixel));
+      image.set(at, counts_work_ ? image.at(at) + glm::vec3(pixel) : glm::vec3(pixel));  // work: both passes'
       image.alpha[at] = pixel.a;
       aovs[at] = aov_pixel(sums[count + j], sums[2 * count + j], std::round(pixel.a * float(k * k)), k);
       aovs[at].error += edge / static_cast<float>(k);

@@ -70,7 +70,8 @@ class DirectPass {
   AovSet aovs_;           // the auxiliary channels each frame carries
   int adaptive_samples_per_axis_;  // filtered:adaptive's K (0: not adaptive)
   AdaptiveBudget adaptive_budget_;
-  bool writes_aovs_;      // the pass accumulates the auxiliary values (asked for, or filtered:adaptive's estimate)
+  bool writes_aovs_;
+  bool counts_work_;      // the pixels hold their samples' summed work, not colours (gpu/work_per_pixel.hpp)      // the pass accumulates the auxiliary values (asked for, or filtered:adaptive's estimate)
   SceneBuffers buffers_;
   DiffractionBuffers diffraction_;
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range

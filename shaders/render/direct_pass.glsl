@@ -196,7 +196,8 @@ void main() {
   // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
   // end: the same float operations as averaging them within one invocation.
   vec4 sum = tile.stratum.z != 0u ? pixels[i] + sample_value : sample_value;
-  pixels[i] = tile.stratum.z == k * k - 1u ? sum / float(k * k) : sum;
+  // Work adds up over the strata: a pixel's work is their sum (renderer/gpu/work_per_pixel.cpp).
+  pixels[i] = tile.stratum.z == k * k - 1u && !kCountsWork ? sum / float(k * k) : sum;
   if (kWritesAovs) {  // sums over the strata, divided on the host by the hits (the error by k^2)
     uint n = tile.rect.z * tile.rect.w;  // a list's length for a list (rect = (0, 0, n, 1))
     pixels[n + i] = tile.stratum.z != 0u ? pixels[n + i] + aov_depth_normal : aov_depth_normal;
