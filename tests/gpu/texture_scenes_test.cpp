@@ -1,6 +1,7 @@
 // `filtered` against the CPU reference on small versions of every scene in scenes/ that has
 // colour-mapped textures and that the GPU renders: grazing and head-on planes (infinite and finite),
-// a sphere and a mesh, power-of-two and odd texture sizes, step and linear maps.
+// a sphere and meshes (one with uv seams), power-of-two and odd texture sizes, step maps with thin
+// bands, linear maps, rotated anisotropic uv scales.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -31,7 +32,10 @@ bool has_colormap_texture(const Scene& scene) {
 // and `mip` (the colour map of the mean texture value) and stay within 1.6x of `colormip` (exact for
 // static textures up to the footprint's shape; the Gaussian model of the values costs the rest).
 // Measured (64x36): colormap_noise_plane naive 0.27 mip 0.22 colormip 0.029 filtered 0.041;
-// colormap_objects naive 0.112 mip 0.064 colormip 0.040 filtered 0.043. `filtered:ss:2` must beat
+// colormap_objects naive 0.112 mip 0.064 colormip 0.040 filtered 0.043; scenes never tuned on (2026-11-26):
+// colormap_thin_bands naive 0.233 mip 0.161 colormip 0.021 filtered 0.028, colormap_anisotropic naive 0.189
+// mip 0.097 colormip 0.042 filtered 0.046, colormap_seams_cube naive 0.078 mip 0.042 colormip 0.019
+// filtered 0.022. `filtered:ss:2` must beat
 // `filtered` by 20% and `ss:2` (same rays, unfiltered).
 TEST(TextureScenes, FilteredBeatsNaiveAndMipOnEveryTexturedScene) {
   auto context = test::make_validated_context();
