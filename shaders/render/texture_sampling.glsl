@@ -185,44 +185,67 @@ vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
   return sqrt(max(second - mean * mean, vec3(0.0)));
 }
 
+// Sub-footprints per pixel axis for `filtered`: the law of the texture values over the pixel is the
+// mixture of one Gaussian per tap of split x split sub-parallelograms that tile the pixel's
+// (docs/colormap_filtering.md, "Mixture of tap laws"); 3 lowers the error further at about twice the
+// device time, 2 was kept for cost.
+const float kFilteredSplit = 2.0;
+
 // The albedo of a colour-mapped texture at the hit, by the method of kTextureMethod, averaged over
-// the taps of the anisotropic footprint with uv axes duv_dx, duv_dy (unused by naive). Moments of
-// the taps combine exactly (a mixture's E[t] and E[t^2] are the means of the taps'). `spread` is the
-// mapped colour's spread over the footprint (colormap_spread) where the error estimate is written
+// the taps of the anisotropic footprint with uv axes duv_dx, duv_dy (unused by naive). `mip` and
+// `colormip` average the taps' values or colours. `filtered` tiles a footprint wider than a texel
+// with kFilteredSplit^2 sub-footprints, each covered by the same number of taps as the whole (one
+// level finer), and integrates the colour map against each tap's own Gaussian: the pixel's value law
+// is the mixture of the taps' (eq. M1), not one Gaussian of the pooled moments. `spread` is the mean
+// of the taps' colour spreads (colormap_spread, eq. M2) where the error estimate is written
 // (kWritesAovs and filtered), else 0.
 vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 spread) {
   spread = vec3(0.0);
   GpuColormap map = colormap_record(m.texture.w);
   if (kTextureMethod == 0u) return colormap_at(map, sample_level(m.texture.x, uv).x);
   uvec4 level0 = texture_level_at(m.texture.x).info;
-  AnisotropicFootprint f =
-      anisotropic_footprint(duv_dx, duv_dy, vec2(level0.yz), float(m.texture.y), kMaxAnisotropicTaps);
+  vec2 size = vec2(level0.yz);
+  AnisotropicFootprint f = anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kMaxAnisotropicTaps);
+  // Within one texel a single tap is exact up to the linearised variance: no split (magnification).
+  float split = kTextureMethod >= 3u && length(f.major * size) > 1.0 ? kFilteredSplit : 1.0;
+  float along = f.taps * split;
+  // Each tap is a split-th of the whole footprint's per axis: one level finer per halving, except where
+  // the whole footprint was clamped to the coarsest level (its own width is unknown there).
+  float coarsest = float(m.texture.y) - 1.0;
+  float lod = f.lod >= coarsest ? f.lod : max(f.lod - log2(split), 0.0);
+  vec2 tap_major = f.major * size / along, tap_minor = f.minor * size / split;  // one tap's axes, in texels
   vec3 colour = vec3(0.0);
   vec2 moments = vec2(0.0);
-  vec2 size = vec2(level0.yz);
-  vec2 tap_major = f.major * size / f.taps, tap_minor = f.minor * size;  // one tap's axes, in texels
-  for (float k = 0.0; k < f.taps; k += 1.0) {
-    vec2 tap = uv + f.major * ((k + 0.5) / f.taps - 0.5);
-    if (kTextureMethod == 2u)
-      colour += sample_trilinear(m.texture.z, m.texture.y, tap, f.lod).rgb;
-    else if (kTextureMethod == 1u)
-      colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, f.lod).x);
-    else
-      moments += footprint_moments(m.texture.x, m.texture.y, tap, f.lod, tap_major, tap_minor);
+  for (float k = 0.0; k < along; k += 1.0) {
+    for (float j = 0.0; j < split; j += 1.0) {
+      vec2 tap = uv + f.major * ((k + 0.5) / along - 0.5) + f.minor * ((j + 0.5) / split - 0.5);
+      if (kTextureMethod == 2u) {
+        colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod).rgb;
+      } else if (kTextureMethod == 1u) {
+        colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod).x);
+      } else {
+        vec2 t = footprint_moments(m.texture.x, m.texture.y, tap, lod, tap_major, tap_minor);
+        float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
+        vec3 mean = colormap_gaussian(map, t.x, sigma);
+        colour += mean;
+        moments += t;
+        if (kWritesAovs && kTextureMethod == 3u) spread += colormap_spread(map, t.x, sigma, mean);
+      }
+    }
   }
-  if (kTextureMethod < 3u) return colour / f.taps;
-  moments /= f.taps;
-  float sigma = sqrt(max(moments.y - moments.x * moments.x, 0.0));
-  vec3 albedo = colormap_gaussian(map, moments.x, sigma);
+  float count = along * split;
+  vec3 albedo = colour / count;
   if (kWritesAovs && kTextureMethod == 3u) {
     // eq. 4: from 1 down to 1/4 as the footprint gathers the texture's whole variance (its coarsest
     // moment level): its value distribution then tends to the texture's histogram, whose mean and
-    // variance the Gaussian has.
+    // variance the model has.
+    moments /= count;
+    float variance = max(moments.y - moments.x * moments.x, 0.0);
     vec4 top = sample_level(m.texture.x + m.texture.y - 1u, uv);
     float total = top.y + top.z - top.x * top.x;
-    float gathered = total > 0.0 ? min(sigma * sigma / total, 1.0) : 1.0;
+    float gathered = total > 0.0 ? min(variance / total, 1.0) : 1.0;
     float structured = sqrt(1.0 - 0.9375 * gathered);
-    spread = structured * colormap_spread(map, moments.x, sigma, albedo);
+    spread *= structured / count;
   }
   return albedo;
 }

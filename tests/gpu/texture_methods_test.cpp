@@ -58,10 +58,10 @@ TEST(TextureMethods, NaiveMatchesTheReferenceAtPixelCentres) {
 
 // Against a 16x16 jittered reference: `filtered` must beat `naive` (aliasing) and `mip` (colour map
 // of the mean texture value: the far field turns to the map's middle colour) by far. On a static
-// texture `colormip` is the box-filtered truth up to the footprint's shape, so `filtered` (which
-// adds its Gaussian model of the texture values, here a 3-band step map over fBm) is required to
-// stay within 1.6x of it, and to beat 4x4 supersampling; measured 64x36: naive 0.27, mip 0.22,
-// colormip 0.029, ss:4 0.057, filtered 0.041.
+// texture `colormip` is the box-filtered truth up to the footprint's shape; `filtered` (a mixture of
+// per-tap Gaussians of the texture values over a finer tiling of the footprint, here a 3-band step map
+// over fBm) must beat it and 4x4 supersampling; measured 64x36: naive 0.27, mip 0.22, colormip 0.029,
+// ss:4 0.057, filtered 0.022 (0.041 with one Gaussian of the pooled moments).
 TEST(TextureMethods, FilteredBeatsTheBaselinesAgainstTheReference) {
   auto context = test::make_validated_context();
   Scene scene = noise_plane();
@@ -74,7 +74,7 @@ TEST(TextureMethods, FilteredBeatsTheBaselinesAgainstTheReference) {
   EXPECT_LT(error[4], 0.5 * error[0]);
   EXPECT_LT(error[4], 0.5 * error[1]);
   EXPECT_LT(error[3], error[0]);  // supersampling converges toward the reference
-  EXPECT_LT(error[4], 1.6 * error[2]);
+  EXPECT_LT(error[4], error[2]);
   EXPECT_LT(error[4], error[3]);
   EXPECT_EQ(context->validation_message_count(), 0u);
 }

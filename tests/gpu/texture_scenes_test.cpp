@@ -1,6 +1,7 @@
 // `filtered` against the CPU reference on small versions of every scene in scenes/ that has
 // colour-mapped textures and that the GPU renders: grazing and head-on planes (infinite and finite),
-// a sphere and a mesh, power-of-two and odd texture sizes, step and linear maps.
+// a sphere and meshes (one with uv seams), power-of-two and odd texture sizes, step maps with thin
+// bands, linear maps, rotated anisotropic uv scales.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -27,12 +28,16 @@ bool has_colormap_texture(const Scene& scene) {
                      [](const Material& m) { return std::holds_alternative<ColormapTextureMaterial>(m); });
 }
 
-// Per scene: RMSE against a 16x16 jittered reference. `filtered` must beat `naive` by far (aliasing)
-// and `mip` (the colour map of the mean texture value) and stay within 1.6x of `colormip` (exact for
-// static textures up to the footprint's shape; the Gaussian model of the values costs the rest).
-// Measured (64x36): colormap_noise_plane naive 0.27 mip 0.22 colormip 0.029 filtered 0.041;
-// colormap_objects naive 0.112 mip 0.064 colormip 0.040 filtered 0.043. `filtered:ss:2` must beat
-// `filtered` by 20% and `ss:2` (same rays, unfiltered).
+// Per scene: RMSE against a 16x16 jittered reference. `filtered` must beat `naive` by far (aliasing),
+// `mip` (the colour map of the mean texture value) and `colormip` (the MIP chain of the mapped colour,
+// exact for static textures up to the footprint's shape; issue 19's target). Measured 64x36
+// (2026-11-26): colormap_noise_plane naive 0.272 mip 0.221 colormip 0.0286 filtered 0.0220;
+// colormap_objects naive 0.112 mip 0.064 colormip 0.0397 filtered 0.0384 (the closest: its error sits on
+// silhouettes, which one ray per pixel cannot resolve); colormap_thin_bands naive 0.233 mip 0.161 colormip
+// 0.0210 filtered 0.0181; colormap_anisotropic naive 0.189 mip 0.097 colormip 0.0421 filtered 0.0255;
+// colormap_seams_cube naive 0.078 mip 0.042 colormip 0.0185 filtered 0.0164; showcase colormip 0.0584
+// filtered 0.0465. `filtered:ss:2` must beat `filtered` by 20% (worst measured: thin bands, 0.76) and
+// `ss:2` (same rays, unfiltered).
 TEST(TextureScenes, FilteredBeatsNaiveAndMipOnEveryTexturedScene) {
   auto context = test::make_validated_context();
   int tested = 0;
@@ -66,7 +71,7 @@ TEST(TextureScenes, FilteredBeatsNaiveAndMipOnEveryTexturedScene) {
                 error[0], error[1], error[2], error[3], error[4], error[5]);
     EXPECT_LT(error[3], 0.6 * error[0]) << name;
     EXPECT_LT(error[3], error[1]) << name;
-    EXPECT_LT(error[3], 1.6 * error[2]) << name;
+    EXPECT_LT(error[3], error[2]) << name;
     // Per stratum, filtered also resolves geometric edges (silhouettes, where one ray per pixel
     // aliases), and each stratum's footprint is a quarter of the pixel's.
     EXPECT_LT(error[5], 0.8 * error[3]) << name;
