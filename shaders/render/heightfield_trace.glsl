@@ -30,6 +30,11 @@ struct HeightField {
   uint corners;   // corners + l: the level-l surface's corner heights, l >= 1 (level 0: the vertices)
   int leaf;       // the level whose nodes the ray intersects (0: cells)
   float blend;    // toward the level leaf + 1 surface, in [0, 1)
+  // What stays fixed along the ray, loaded once instead of once per step: the first level record of the
+  // bounds it tests (dilated when it traces a smoothed surface), and the records of the corner grids of
+  // levels leaf and leaf + 1 (the latter only with blend > 0).
+  uint bound_levels;
+  uvec4 leaf_corners, parent_corners;
   int top;
   ivec2 size;     // cells (= vertices) of one tile
   ivec2 tiles;    // tiles over the rectangle (the last may be cut)
@@ -62,6 +67,9 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   f.top = int(m.kind.w) - 1;
   f.leaf = min(int(lambda), f.top);
   f.blend = f.leaf < f.top ? lambda - float(f.leaf) : 0.0;
+  f.bound_levels = f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds;
+  f.leaf_corners = texture_level_at(f.leaf == 0 ? f.vertices : f.corners + uint(f.leaf)).info;
+  f.parent_corners = f.blend > 0.0 ? texture_level_at(f.corners + uint(f.leaf + 1)).info : uvec4(0u);
   uvec4 info = texture_level_at(f.vertices).info;
   f.size = ivec2(info.yz);
   f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
@@ -100,10 +108,9 @@ vec4 heightfield_extent(HeightField f, int level, ivec2 node, ivec2 tile) {
   return vec4(lo.x, hi.x, lo.y, hi.y);
 }
 
-// The corners (z00, z10, z01, z11) of the level-l surface over its node n, from the level's corner
-// grid (the last corner is the first: the field repeats).
-vec4 heightfield_node_corners(HeightField f, int level, ivec2 n) {
-  uvec4 info = texture_level_at(level == 0 ? f.vertices : f.corners + uint(level)).info;
+// The corners (z00, z10, z01, z11) of a level's surface over its node n, from the level's corner grid
+// (record `info`; the last corner is the first: the field repeats).
+vec4 heightfield_node_corners(uvec4 info, ivec2 n) {
   ivec2 size = ivec2(info.yz), far = n + 1;
   far = ivec2(far.x == size.x ? 0 : far.x, far.y == size.y ? 0 : far.y);
   uint row0 = info.x + uint(n.y * size.x), row1 = info.x + uint(far.y * size.x);
@@ -115,23 +122,17 @@ vec4 heightfield_node_corners(HeightField f, int level, ivec2 n) {
 // the leaf level's corners blended with the next level's surface at the same points (a bilinear
 // patch of the parent node, so the blend is bilinear over n and continuous across nodes).
 vec4 heightfield_leaf_corners(HeightField f, int level, ivec2 n, ivec2 tile, vec4 e) {
-  vec4 z = heightfield_node_corners(f, level, n);
+  vec4 z = heightfield_node_corners(f.leaf_corners, n);
   if (f.blend <= 0.0) return z;
   vec4 pe = heightfield_extent(f, level + 1, n >> 1, tile);
-  vec4 pz = heightfield_node_corners(f, level + 1, n >> 1);
+  vec4 pz = heightfield_node_corners(f.parent_corners, n >> 1);
   vec2 u = (e.xy - pe.x) / (pe.y - pe.x), v = (e.zw - pe.z) / (pe.w - pe.z);
   vec4 coarse = vec4(heightfield_bilinear(pz, u.x, v.x), heightfield_bilinear(pz, u.y, v.x),
                      heightfield_bilinear(pz, u.x, v.y), heightfield_bilinear(pz, u.y, v.y));
   return mix(z, coarse, f.blend);
 }
 
-// The record of MIP level l (<= top) of the bounds the ray tests: dilated when it traces a smoothed
-// surface.
-uvec4 heightfield_level(HeightField f, int l) {
-  return texture_level_at((f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(min(l, f.top))).info;
-}
-
-// The nodes of MIP level l along each axis of a tile.
+// The nodes of MIP level l along each axis of a tile (the sizes of mip_chain_sizes: ceil(size / 2^l)).
 ivec2 heightfield_nodes_per_tile(HeightField f, int level) { return (f.size + (1 << level) - 1) >> level; }
 
 // The t where the ray crosses the plane at p of one axis (d = 0: never).
@@ -202,7 +203,6 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     float exit_x = heightfield_plane_t(r.o.x, r.d.x, r.inv_d.x, r.d.x > 0.0 ? e.y : e.x);
     float exit_y = heightfield_plane_t(r.o.y, r.d.y, r.inv_d.y, r.d.y > 0.0 ? e.w : e.z);
     float t_exit = min(min(exit_x, exit_y), t_end);
-    uvec4 record = heightfield_level(f, level);
     bool leaf = level == f.leaf;
     vec4 corners = vec4(0.0);
     vec2 z;
@@ -215,6 +215,7 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
       z = vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
                max(max(corners.x, corners.y), max(corners.z, corners.w)));
     } else {
+      uvec4 record = texture_level_at(f.bound_levels + uint(min(level, f.top))).info;
       z = texel_at(record.x + uint(node.y) * record.y + uint(node.x)).xy;
     }
     vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
@@ -229,20 +230,19 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
         node = min(2 * node + half_xy, heightfield_nodes_per_tile(f, level) - 1);  // no upper half where the tile ends
         continue;
       }
-      float hit;
-      if (level == 0) {  // a cell: as the reference tests it, in texels
-        hit = heightfield_cell_hit(r.o, r.d, r.inv_d, e.x, e.z, corners, r.t_lo, r.t_hi);
-      } else {  // a node: in its own unit square
-        vec2 s = e.yw - e.xz;
-        vec3 o = vec3((r.o.xy - e.xz) / s, r.o.z), d = vec3(r.d.xy / s, r.d.z);
-        hit = heightfield_cell_hit(o, d, 1.0 / d, 0.0, 0.0, corners, r.t_lo, r.t_hi);
-      }
+      // A cell is tested as the reference tests it, in texels; a coarser node in its own unit square.
+      // One call with the arguments selected: lanes at both kinds of leaf run one copy of the test.
+      bool cell = level == 0;
+      vec2 s = e.yw - e.xz;
+      vec3 o = cell ? r.o : vec3((r.o.xy - e.xz) / s, r.o.z), d = cell ? r.d : vec3(r.d.xy / s, r.d.z);
+      vec2 corner = cell ? e.xz : vec2(0.0);
+      float hit = heightfield_cell_hit(o, d, cell ? r.inv_d : 1.0 / d, corner.x, corner.y, corners, r.t_lo, r.t_hi);
       if (hit > 0.0) return hit;
     }
     if (t_exit >= t_end) break;
     t = t_exit;
     ivec2 next = node + ivec2(exit_x == t_exit ? dir.x : 0, exit_y == t_exit ? dir.y : 0);
-    ivec2 out_of_tile = ivec2(greaterThanEqual(next, ivec2(record.yz))) - ivec2(lessThan(next, ivec2(0)));
+    ivec2 out_of_tile = ivec2(greaterThanEqual(next, heightfield_nodes_per_tile(f, min(level, f.top)))) - ivec2(lessThan(next, ivec2(0)));
     if (out_of_tile != ivec2(0)) {
       tile += out_of_tile;
       if (any(lessThan(tile, ivec2(0))) || any(greaterThanEqual(tile, f.tiles))) break;
