@@ -10,6 +10,8 @@
 // Then, for the tracer (render/heightfield_trace.glsl), built on the CPU: the min-max MIP of the cells
 // (min, max, -, -), `count` levels of the same sizes; the same bounds dilated over 3 x 3 nodes
 // (`count` levels); the corner heights of the smoothed surfaces of levels 1 .. count - 1 (z, -, -, -).
+// The two min-max chains take heightfield_bound_span texels each, the dilated one right after the
+// other, level l at FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after level 0 (unused texels between).
 #pragma once
 
 #include <cstdint>
@@ -33,6 +35,11 @@ MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, dou
 //   params  (alpha_x, alpha_y, z_offset, -)
 //   texture (first level = vertex level, chain level count, height map, slope map (or FACET_NO_COLORMAP))
 GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& material);
+
+// The texels of one min-max chain over a width x height field: 2A, A = the largest over levels l of
+// the level's texels times 2^l, so that FACET_HEIGHTFIELD_BOUND_LEVEL(2A, l) leaves each level room
+// before the next (docs/render_speed.md, 2026-11-26 "a step of the tracer").
+uint heightfield_bound_span(int width, int height);
 
 // What tracing the material's field over a rectangle of patch_size costs the GPU tracer: an upper
 // bound on the MIP nodes one ray visits (at most FACET_HEIGHTFIELD_MAX_STEPS loop steps in all fields

@@ -11,6 +11,7 @@
 // refuses a patch whose bound on visited nodes passes it (heightfield_trace_cost).
 #ifndef FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
 #define FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
+#include "layout/heightfield_layout.glsl"
 #include "lib/heightfield_cell.glsl"
 #include "render/scene_bindings.glsl"
 
@@ -30,10 +31,11 @@ struct HeightField {
   uint corners;   // corners + l: the level-l surface's corner heights, l >= 1 (level 0: the vertices)
   int leaf;       // the level whose nodes the ray intersects (0: cells)
   float blend;    // toward the level leaf + 1 surface, in [0, 1)
-  // What stays fixed along the ray, loaded once instead of once per step: the first level record of the
-  // bounds it tests (dilated when it traces a smoothed surface), and the records of the corner grids of
-  // levels leaf and leaf + 1 (the latter only with blend > 0).
-  uint bound_levels;
+  // What stays fixed along the ray, loaded once instead of once per step: where level 0 of the bounds
+  // it tests starts (dilated when it traces a smoothed surface) and the texels of each bound chain
+  // (layout/heightfield_layout.glsl), and the records of the corner grids of levels leaf and leaf + 1
+  // (the latter only with blend > 0).
+  uint bound_base, bound_span;
   uvec4 leaf_corners, parent_corners;
   int top;
   ivec2 size;     // cells (= vertices) of one tile
@@ -67,13 +69,15 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   f.top = int(m.kind.w) - 1;
   f.leaf = min(int(lambda), f.top);
   f.blend = f.leaf < f.top ? lambda - float(f.leaf) : 0.0;
-  f.bound_levels = f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds;
+  uint bounds0 = texture_level_at(f.bounds).info.x, dilated0 = texture_level_at(f.dilated).info.x;
+  f.bound_span = dilated0 - bounds0;  // the dilated chain follows the other (microsurface_upload.hpp)
+  f.bound_base = f.leaf > 0 || f.blend > 0.0 ? dilated0 : bounds0;
   f.leaf_corners = texture_level_at(f.leaf == 0 ? f.vertices : f.corners + uint(f.leaf)).info;
   f.parent_corners = f.blend > 0.0 ? texture_level_at(f.corners + uint(f.leaf + 1)).info : uvec4(0u);
   uvec4 info = texture_level_at(f.vertices).info;
   f.size = ivec2(info.yz);
   f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
-  f.range = texel_at(texture_level_at(f.bounds + uint(f.top)).info.x).xy;
+  f.range = texel_at(bounds0 + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, f.top)).xy;
   return f;
 }
 
@@ -203,6 +207,7 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     float exit_x = heightfield_plane_t(r.o.x, r.d.x, r.inv_d.x, r.d.x > 0.0 ? e.y : e.x);
     float exit_y = heightfield_plane_t(r.o.y, r.d.y, r.inv_d.y, r.d.y > 0.0 ? e.w : e.z);
     float t_exit = min(min(exit_x, exit_y), t_end);
+    ivec2 nodes = heightfield_nodes_per_tile(f, min(level, f.top));
     bool leaf = level == f.leaf;
     vec4 corners = vec4(0.0);
     vec2 z;
@@ -215,8 +220,8 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
       z = vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
                max(max(corners.x, corners.y), max(corners.z, corners.w)));
     } else {
-      uvec4 record = texture_level_at(f.bound_levels + uint(min(level, f.top))).info;
-      z = texel_at(record.x + uint(node.y) * record.y + uint(node.x)).xy;
+      uint first = f.bound_base + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, min(level, f.top));
+      z = texel_at(first + uint(node.y * nodes.x + node.x)).xy;
     }
     vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
     float t_in = max(t, tz.x);
@@ -242,7 +247,7 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     if (t_exit >= t_end) break;
     t = t_exit;
     ivec2 next = node + ivec2(exit_x == t_exit ? dir.x : 0, exit_y == t_exit ? dir.y : 0);
-    ivec2 out_of_tile = ivec2(greaterThanEqual(next, heightfield_nodes_per_tile(f, min(level, f.top)))) - ivec2(lessThan(next, ivec2(0)));
+    ivec2 out_of_tile = ivec2(greaterThanEqual(next, nodes)) - ivec2(lessThan(next, ivec2(0)));
     if (out_of_tile != ivec2(0)) {
       tile += out_of_tile;
       if (any(lessThan(tile, ivec2(0))) || any(greaterThanEqual(tile, f.tiles))) break;

@@ -2,6 +2,7 @@
 // renderer/gpu/microsurface_upload.cpp): corner heights are the field's area means around each corner,
 // and the dilated min-max bounds of every node hold every smoothed surface the traversal can meet
 // under it, so no node that a smoothed surface crosses is culled. Brute force over small fields.
+// Also where the min-max chains lie: where the tracer computes each level to be, without overlaps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <random>
 
 #include "gpu/microsurface_upload.hpp"
+#include "layout/heightfield_layout.glsl"
 #include "scene/colormap.hpp"
 
 namespace facet {
@@ -107,6 +109,36 @@ TEST(SmoothedSurfaces, DilatedBoundsHoldEverySmoothedSurface) {
       }
   }
   EXPECT_GT(checked, 5000);
+}
+
+// The tracer finds level l of the bounds it tests at FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after
+// level 0, span = dilated level 0 - bounds level 0, with ceil(size / 2^l) nodes a row
+// (render/heightfield_trace.glsl): the records say the same, and no level overlaps another or leaves
+// its chain, on odd, one-texel-wide and non-square fields.
+TEST(SmoothedSurfaces, BoundLevelsLieWhereTheTracerComputesThem) {
+  const int sizes[][2] = {{1, 1}, {1, 7}, {3, 1}, {5, 3}, {8, 8}, {17, 4}, {33, 64}, {45, 38}};
+  for (const auto& size : sizes) {
+    const Chains c = chains(size[0], size[1], 7);
+    const uint32_t span = gpu::heightfield_bound_span(c.width, c.height);
+    const uint32_t bounds0 = c.level(c.material.kind.z).x, dilated0 = c.level(c.dilated(0)).x;
+    EXPECT_EQ(dilated0 - bounds0, span) << c.width << "x" << c.height;
+    for (const uint32_t first : {c.material.kind.z, c.dilated(0)}) {
+      const uint64_t base = c.level(first).x;
+      uint64_t end = base;  // past the last texel of the levels so far
+      for (uint32_t l = 0; l < c.count(); ++l) {
+        const gpu::uvec4 info = c.level(first + l);
+        EXPECT_EQ(info.x, base + FACET_HEIGHTFIELD_BOUND_LEVEL(span, l)) << c.width << "x" << c.height << " level " << l;
+        EXPECT_EQ(info.y, (static_cast<uint32_t>(c.width) + (1u << l) - 1) >> l);
+        EXPECT_EQ(info.z, (static_cast<uint32_t>(c.height) + (1u << l) - 1) >> l);
+        EXPECT_GE(info.x, end) << c.width << "x" << c.height << " level " << l;
+        end = info.x + static_cast<uint64_t>(info.y) * info.z;
+      }
+      EXPECT_LE(end, base + span) << c.width << "x" << c.height;
+    }
+    if (c.count() > 1) {
+      EXPECT_GE(c.level(c.corners(1)).x, dilated0 + span);
+    }
+  }
 }
 
 }  // namespace
