@@ -38,7 +38,7 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
 
 // The texels of one min-max chain over a width x height field: 2A, A = the largest over levels l of
 // the level's texels times 2^l, so that FACET_HEIGHTFIELD_BOUND_LEVEL(2A, l) leaves each level room
-// before the next (docs/render_speed.md, 2026-11-26 "a step of the tracer").
+// before the next (docs/render_speed.md, "A step of the height-field tracer").
 uint heightfield_bound_span(int width, int height);
 
 // What tracing the material's field over a rectangle of patch_size costs the GPU tracer: an upper
