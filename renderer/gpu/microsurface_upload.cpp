@@ -135,6 +135,23 @@ void append_corner_heights(TextureData& data, uint vertex_level, uint count) {
   }
 }
 
+// Each node's four corner heights (z00, z10, z01, z11) in one texel, levels 0 .. count - 1: level 0
+// from the vertex heights (the cells), level l >= 1 from its corner grid (records corners + l), the
+// last corner wrapping to the first (the field repeats). The tracer loads a leaf's corners from here
+// in one fetch instead of four.
+void append_corner_quads(TextureData& data, uint vertex_level, uint corners, uint count) {
+  for (uint l = 0; l < count; ++l) {
+    const uvec4 grid = data.levels[l == 0 ? vertex_level : corners + l].info;
+    const uint w = grid.y, h = grid.z;
+    data.levels.push_back({uvec4(data.texels.size(), w, h, l)});
+    for (uint j = 0; j < h; ++j)
+      for (uint i = 0; i < w; ++i) {
+        const auto z = [&](uint a, uint b) { return data.texels[grid.x + static_cast<size_t>(b % h) * w + a % w].x; };
+        data.texels.push_back(vec4(z(i, j), z(i + 1, j), z(i, j + 1), z(i + 1, j + 1)));
+      }
+  }
+}
+
 }  // namespace
 
 uint heightfield_bound_span(int width, int height) {
@@ -228,6 +245,7 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
   const uint bounds = append_height_bounds(data, first);
   append_dilated_bounds(data, bounds, count);
   append_corner_heights(data, first, count);
+  append_corner_quads(data, first, bounds + 2 * count - 1, count);
 
   const auto add_map = [&](const std::optional<Colormap>& map) {
     if (!map) return FACET_NO_COLORMAP;

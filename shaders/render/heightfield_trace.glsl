@@ -29,11 +29,12 @@ struct HeightField {
   uint bounds;    // texture level of min-max level 0 (one texel per cell); level `top` is 1 x 1
   uint dilated;   // the same bounds over each node's 3 x 3 neighbourhood: they hold the smoothed surfaces
   uint corners;   // corners + l: the level-l surface's corner heights, l >= 1 (level 0: the vertices)
+  uint quads;     // quads + l: each level-l node's four corner heights in one texel
   int leaf;       // the level whose nodes the ray intersects (0: cells)
   float blend;    // toward the level leaf + 1 surface, in [0, 1)
   // What stays fixed along the ray, loaded once instead of once per step: where level 0 of the bounds
   // it tests starts (dilated when it traces a smoothed surface) and the texels of each bound chain
-  // (layout/heightfield_layout.glsl), and the records of the corner grids of levels leaf and leaf + 1
+  // (layout/heightfield_layout.glsl), and the records of the corner quads of levels leaf and leaf + 1
   // (the latter only with blend > 0).
   uint bound_base, bound_span;
   uvec4 leaf_corners, parent_corners;
@@ -66,14 +67,15 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   f.bounds = m.kind.z;
   f.dilated = m.kind.z + m.kind.w;
   f.corners = m.kind.z + 2u * m.kind.w - 1u;
+  f.quads = m.kind.z + 3u * m.kind.w - 1u;
   f.top = int(m.kind.w) - 1;
   f.leaf = min(int(lambda), f.top);
   f.blend = f.leaf < f.top ? lambda - float(f.leaf) : 0.0;
   uint bounds0 = texture_level_at(f.bounds).info.x, dilated0 = texture_level_at(f.dilated).info.x;
   f.bound_span = dilated0 - bounds0;  // the dilated chain follows the other (microsurface_upload.hpp)
   f.bound_base = f.leaf > 0 || f.blend > 0.0 ? dilated0 : bounds0;
-  f.leaf_corners = texture_level_at(f.leaf == 0 ? f.vertices : f.corners + uint(f.leaf)).info;
-  f.parent_corners = f.blend > 0.0 ? texture_level_at(f.corners + uint(f.leaf + 1)).info : uvec4(0u);
+  f.leaf_corners = texture_level_at(f.quads + uint(f.leaf)).info;
+  f.parent_corners = f.blend > 0.0 ? texture_level_at(f.quads + uint(f.leaf + 1)).info : uvec4(0u);
   uvec4 info = texture_level_at(f.vertices).info;
   f.size = ivec2(info.yz);
   f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
@@ -112,15 +114,9 @@ vec4 heightfield_extent(HeightField f, int level, ivec2 node, ivec2 tile) {
   return vec4(lo.x, hi.x, lo.y, hi.y);
 }
 
-// The corners (z00, z10, z01, z11) of a level's surface over its node n, from the level's corner grid
-// (record `info`; the last corner is the first: the field repeats).
-vec4 heightfield_node_corners(uvec4 info, ivec2 n) {
-  ivec2 size = ivec2(info.yz), far = n + 1;
-  far = ivec2(far.x == size.x ? 0 : far.x, far.y == size.y ? 0 : far.y);
-  uint row0 = info.x + uint(n.y * size.x), row1 = info.x + uint(far.y * size.x);
-  return vec4(texel_at(row0 + uint(n.x)).x, texel_at(row0 + uint(far.x)).x, texel_at(row1 + uint(n.x)).x,
-              texel_at(row1 + uint(far.x)).x);
-}
+// The corners (z00, z10, z01, z11) of a level's surface over its node n: one texel of the level's
+// corner quads (record `info`; microsurface_upload.hpp).
+vec4 heightfield_node_corners(uvec4 info, ivec2 n) { return texel_at(info.x + uint(n.y) * info.y + uint(n.x)); }
 
 // The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e):
 // the leaf level's corners blended with the next level's surface at the same points (a bilinear

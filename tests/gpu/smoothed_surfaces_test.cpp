@@ -34,6 +34,7 @@ struct Chains {
   uint32_t count() const { return material.kind.w; }
   uint32_t dilated(uint32_t l) const { return material.kind.z + count() + l; }
   uint32_t corners(uint32_t l) const { return material.kind.z + 2 * count() + l - 1; }  // l >= 1
+  uint32_t quads(uint32_t l) const { return material.kind.z + 3 * count() + l - 1; }
 };
 
 Chains chains(int width, int height, unsigned seed) {
@@ -109,6 +110,29 @@ TEST(SmoothedSurfaces, DilatedBoundsHoldEverySmoothedSurface) {
       }
   }
   EXPECT_GT(checked, 5000);
+}
+
+// A node's corner quad holds the four corners the tracer's bilinear patch over it uses: vertices
+// (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1) of its level's corner grid (level 0: the field's
+// vertices), wrapped, on a non-power-of-two field whose coarse levels wrap at cut nodes.
+TEST(SmoothedSurfaces, CornerQuadsHoldEachNodesFourCorners) {
+  const Chains c = chains(45, 38, 9);
+  int checked = 0;
+  for (uint32_t l = 0; l < c.count(); ++l) {
+    const uint32_t grid = l == 0 ? c.material.texture.x : c.corners(l);
+    const gpu::uvec4 info = c.level(grid), quads = c.level(c.quads(l));
+    ASSERT_EQ(quads.y, info.y);
+    ASSERT_EQ(quads.z, info.z);
+    const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i)
+        for (int k = 0; k < 4; ++k) {
+          const int a = (i + (k & 1)) % w, b = (j + (k >> 1)) % h;
+          EXPECT_EQ(c.texel(c.quads(l), i, j, k), c.texel(grid, a, b, 0)) << "level " << l << " node " << i << "," << j;
+          ++checked;
+        }
+  }
+  EXPECT_GT(checked, 4 * 45 * 38);
 }
 
 // The tracer finds level l of the bounds it tests at FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after
