@@ -1,6 +1,6 @@
 // A microsurface material as GPU data (docs/microsurface_filtering.md). In the shared texel buffer:
-//   level `first`: the vertex heights z(i, j) - z_offset of the field (world units), for the point
-//     lookups of (H1)-(H2) (naive, and filtered under magnification);
+//   level `first`: the vertex heights z(i, j) - z_offset of the field (world units), from which the
+//     rest is built;
 //   then three MIP chains of `count` levels over the field's cells (texel (i, j) = the bilinear patch
 //   between vertices i..i+1, j..j+1, so texel centres sit where sample_level expects them):
 //     moments  (E[z], E[z^2], E[s_x], E[s_y])        exact over each patch, heights minus z_offset,
@@ -10,7 +10,8 @@
 // Then, for the tracer (render/heightfield_trace.glsl), built on the CPU: the min-max MIP of the cells
 // (min, max, -, -), `count` levels of the same sizes; the same bounds dilated over 3 x 3 nodes
 // (`count` levels); the corner heights of the smoothed surfaces of levels 1 .. count - 1 (z, -, -, -);
-// each node's four corner heights of levels 0 .. count - 1 in one texel (z00, z10, z01, z11).
+// each node's four corner heights of levels 0 .. count - 1 in one texel (z00, z10, z01, z11): the
+// tracer's leaves, and at level 0 the point lookups of (H1)-(H2) (naive, filtered under magnification).
 // The two min-max chains take heightfield_bound_span texels each, the dilated one right after the
 // other, level l at FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after level 0 (unused texels between).
 #pragma once

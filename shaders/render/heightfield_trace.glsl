@@ -44,20 +44,21 @@ struct HeightField {
   vec2 range;     // z over the whole field
 };
 
-// (H1)-(H2) of docs/assets.md at texel coordinates q (vertex (i, j) at q = (i, j)) of the vertex
-// heights at texture level `vertices`: (z, dz/dx, dz/dy), z about the material's z_offset, slopes
-// per world unit (delta = texel size).
-vec3 heightfield_point(uint vertices, vec2 q, float delta) {
-  uvec4 info = texture_level_at(vertices).info;
-  int w = int(info.y), h = int(info.z);
+// The record of microsurface m's level-0 corner quads: each cell's four vertex heights in one texel
+// (renderer/gpu/microsurface_upload.hpp).
+uint heightfield_quads(GpuMaterial m) { return m.kind.z + 3u * m.kind.w - 1u; }
+
+// (H1)-(H2) of docs/assets.md at texel coordinates q (vertex (i, j) at q = (i, j)) from the level-0
+// corner quads at texture level `quads` (heightfield_quads): (z, dz/dx, dz/dy), z about the
+// material's z_offset, slopes per world unit (delta = texel size). One load, the wrap already in it.
+vec3 heightfield_point(uint quads, vec2 q, float delta) {
+  uvec4 info = texture_level_at(quads).info;
   vec2 cell = floor(q);
   vec2 f = q - cell;
-  int i0 = int(mod(cell.x, float(w))), j0 = int(mod(cell.y, float(h)));
-  int i1 = (i0 + 1) % w, j1 = (j0 + 1) % h;
-  float z00 = texel_at(info.x + uint(j0 * w + i0)).x, z10 = texel_at(info.x + uint(j0 * w + i1)).x;
-  float z01 = texel_at(info.x + uint(j1 * w + i0)).x, z11 = texel_at(info.x + uint(j1 * w + i1)).x;
-  float z = mix(mix(z00, z10, f.x), mix(z01, z11, f.x), f.y);
-  return vec3(z, mix(z10 - z00, z11 - z01, f.y) / delta, mix(z01 - z00, z11 - z10, f.x) / delta);
+  int i0 = int(mod(cell.x, float(info.y))), j0 = int(mod(cell.y, float(info.z)));
+  vec4 z = texel_at(info.x + uint(j0) * info.y + uint(i0));  // (z00, z10, z01, z11)
+  float h = mix(mix(z.x, z.y, f.x), mix(z.z, z.w, f.x), f.y);
+  return vec3(h, mix(z.y - z.x, z.w - z.z, f.y) / delta, mix(z.z - z.x, z.w - z.y, f.x) / delta);
 }
 
 // The field of microsurface m on `plane`, smoothed to level lambda (0: the field itself).
@@ -67,7 +68,7 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   f.bounds = m.kind.z;
   f.dilated = m.kind.z + m.kind.w;
   f.corners = m.kind.z + 2u * m.kind.w - 1u;
-  f.quads = m.kind.z + 3u * m.kind.w - 1u;
+  f.quads = heightfield_quads(m);
   f.top = int(m.kind.w) - 1;
   f.leaf = min(int(lambda), f.top);
   f.blend = f.leaf < f.top ? lambda - float(f.leaf) : 0.0;
