@@ -28,7 +28,6 @@ struct HeightField {
   uint vertices;  // texture level of the vertex heights
   uint bounds;    // texture level of min-max level 0 (one texel per cell); level `top` is 1 x 1
   uint dilated;   // the same bounds over each node's 3 x 3 neighbourhood: they hold the smoothed surfaces
-  uint corners;   // corners + l: the level-l surface's corner heights, l >= 1 (level 0: the vertices)
   uint quads;     // quads + l: each level-l node's four corner heights in one texel
   int leaf;       // the level whose nodes the ray intersects (0: cells)
   float blend;    // toward the level leaf + 1 surface, in [0, 1)
@@ -67,7 +66,6 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   f.vertices = m.texture.x;
   f.bounds = m.kind.z;
   f.dilated = m.kind.z + m.kind.w;
-  f.corners = m.kind.z + 2u * m.kind.w - 1u;
   f.quads = heightfield_quads(m);
   f.top = int(m.kind.w) - 1;
   f.leaf = min(int(lambda), f.top);
