@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "common/error.hpp"
 #include "gpu/mip_builder.hpp"
+#include "layout/heightfield_layout.glsl"
 
 namespace facet::gpu {
 
@@ -21,15 +24,19 @@ struct Patch {
 // The min-max MIP of the field's cells for the GPU tracer (render/heightfield_trace.glsl): level 0
 // holds (min, max) of each cell's four vertex heights as stored (float, so the bounds hold exactly
 // what the tracer reads), each coarser level the extremes of its 2 x 2 children, down to 1 x 1.
-// Returns the first level record; the chain has mip_chain_sizes(width, height).size() levels.
+// Returns the first level record; the chain has mip_chain_sizes(width, height).size() levels, laid
+// out as heightfield_bound_span says.
 uint append_height_bounds(TextureData& data, uint vertex_level) {
   const uvec4 info = data.levels[vertex_level].info;
   const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
   const auto z = [&](int i, int j) { return data.texels[info.x + static_cast<size_t>(j % h) * w + (i % w)].x; };
   const uint first = static_cast<uint>(data.levels.size());
   const std::vector<glm::uvec2> sizes = mip_chain_sizes(w, h);
+  const uint span = heightfield_bound_span(w, h);
+  const size_t base = data.texels.size();
+  data.texels.resize(base + span, vec4(0.0f));
   for (size_t l = 0; l < sizes.size(); ++l) {
-    const uint offset = static_cast<uint>(data.texels.size());
+    const uint offset = static_cast<uint>(base + FACET_HEIGHTFIELD_BOUND_LEVEL(span, l));
     data.levels.push_back({uvec4(offset, sizes[l].x, sizes[l].y, l)});
     for (uint j = 0; j < sizes[l].y; ++j)
       for (uint i = 0; i < sizes[l].x; ++i) {
@@ -50,7 +57,7 @@ uint append_height_bounds(TextureData& data, uint vertex_level) {
             hi = std::max(hi, b.y);
           }
         }
-        data.texels.push_back(vec4(lo, hi, 0.0f, 0.0f));
+        data.texels[offset + static_cast<size_t>(j) * sizes[l].x + i] = vec4(lo, hi, 0.0f, 0.0f);
       }
   }
   return first;
@@ -60,12 +67,18 @@ uint append_height_bounds(TextureData& data, uint vertex_level) {
 // (the field repeats): they hold every smoothed surface of (T2) of a level below the node's. Each
 // node of such a level lies inside the node (the quadtree nests) and its corner heights average the
 // nodes of its level around the corner, which lie in the node or its neighbours. (The surface over
-// the traversal's leaf nodes is bounded by its own corners, render/heightfield_trace.glsl.)
+// the traversal's leaf nodes is bounded by its own corners, render/heightfield_trace.glsl.) Laid out
+// as the chain it dilates, right after it.
 void append_dilated_bounds(TextureData& data, uint bounds, uint count) {
+  const uvec4 level0 = data.levels[bounds].info;
+  const uint span = heightfield_bound_span(static_cast<int>(level0.y), static_cast<int>(level0.z));
+  const size_t base = data.texels.size();
+  data.texels.resize(base + span, vec4(0.0f));
   for (uint l = 0; l < count; ++l) {
     const uvec4 info = data.levels[bounds + l].info;
     const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
-    data.levels.push_back({uvec4(data.texels.size(), w, h, l)});
+    const size_t offset = base + FACET_HEIGHTFIELD_BOUND_LEVEL(span, l);
+    data.levels.push_back({uvec4(offset, w, h, l)});
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
         float lo = std::numeric_limits<float>::infinity(), hi = -lo;
@@ -76,7 +89,7 @@ void append_dilated_bounds(TextureData& data, uint bounds, uint count) {
             lo = std::min(lo, b.x);
             hi = std::max(hi, b.y);
           }
-        data.texels.push_back(vec4(lo, hi, 0.0f, 0.0f));
+        data.texels[offset + static_cast<size_t>(j) * w + i] = vec4(lo, hi, 0.0f, 0.0f);
       }
   }
 }
@@ -122,7 +135,36 @@ void append_corner_heights(TextureData& data, uint vertex_level, uint count) {
   }
 }
 
+// Each node's four corner heights (z00, z10, z01, z11) in one texel, levels 0 .. count - 1: level 0
+// from the vertex heights (the cells), level l >= 1 from its corner grid (records corners + l), the
+// last corner wrapping to the first (the field repeats). The tracer loads a leaf's corners from here
+// in one fetch instead of four.
+void append_corner_quads(TextureData& data, uint vertex_level, uint corners, uint count) {
+  for (uint l = 0; l < count; ++l) {
+    const uvec4 grid = data.levels[l == 0 ? vertex_level : corners + l].info;
+    const uint w = grid.y, h = grid.z;
+    data.levels.push_back({uvec4(data.texels.size(), w, h, l)});
+    for (uint j = 0; j < h; ++j)
+      for (uint i = 0; i < w; ++i) {
+        const auto z = [&](uint a, uint b) { return data.texels[grid.x + static_cast<size_t>(b % h) * w + a % w].x; };
+        data.texels.push_back(vec4(z(i, j), z(i + 1, j), z(i, j + 1), z(i + 1, j + 1)));
+      }
+  }
+}
+
 }  // namespace
+
+uint heightfield_bound_span(int width, int height) {
+  // Level l then starts at 2A - (2A >> l) and the next at 2A - (2A >> (l + 1)), ceil((2A >> l) / 2)
+  // texels later, which is at least A / 2^l - 1/2 and so, being whole, at least the level's texels.
+  std::uint64_t a = 0;
+  const std::vector<glm::uvec2> sizes = mip_chain_sizes(width, height);
+  for (size_t l = 0; l < sizes.size(); ++l) a = std::max(a, (std::uint64_t{sizes[l].x} * sizes[l].y) << l);
+  if (2 * a > std::numeric_limits<uint>::max())
+    throw Error("microsurface: a " + std::to_string(width) + "x" + std::to_string(height) +
+                " height field is too large for the tracer's bounds");
+  return static_cast<uint>(2 * a);
+}
 
 HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material, glm::dvec2 patch_size) {
   const std::int64_t w = material.heights->width, h = material.heights->height;
@@ -203,6 +245,7 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
   const uint bounds = append_height_bounds(data, first);
   append_dilated_bounds(data, bounds, count);
   append_corner_heights(data, first, count);
+  append_corner_quads(data, first, bounds + 2 * count - 1, count);
 
   const auto add_map = [&](const std::optional<Colormap>& map) {
     if (!map) return FACET_NO_COLORMAP;

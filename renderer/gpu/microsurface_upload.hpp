@@ -1,6 +1,6 @@
 // A microsurface material as GPU data (docs/microsurface_filtering.md). In the shared texel buffer:
-//   level `first`: the vertex heights z(i, j) - z_offset of the field (world units), for the point
-//     lookups of (H1)-(H2) (naive, and filtered under magnification);
+//   level `first`: the vertex heights z(i, j) - z_offset of the field (world units), from which the
+//     rest is built;
 //   then three MIP chains of `count` levels over the field's cells (texel (i, j) = the bilinear patch
 //   between vertices i..i+1, j..j+1, so texel centres sit where sample_level expects them):
 //     moments  (E[z], E[z^2], E[s_x], E[s_y])        exact over each patch, heights minus z_offset,
@@ -9,7 +9,11 @@
 // Coarser levels are box means (append_mip_chain), i.e. the moments over the covered patches.
 // Then, for the tracer (render/heightfield_trace.glsl), built on the CPU: the min-max MIP of the cells
 // (min, max, -, -), `count` levels of the same sizes; the same bounds dilated over 3 x 3 nodes
-// (`count` levels); the corner heights of the smoothed surfaces of levels 1 .. count - 1 (z, -, -, -).
+// (`count` levels); the corner heights of the smoothed surfaces of levels 1 .. count - 1 (z, -, -, -);
+// each node's four corner heights of levels 0 .. count - 1 in one texel (z00, z10, z01, z11): the
+// tracer's leaves, and at level 0 the point lookups of (H1)-(H2) (naive, filtered under magnification).
+// The two min-max chains take heightfield_bound_span texels each, the dilated one right after the
+// other, level l at FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after level 0 (unused texels between).
 #pragma once
 
 #include <cstdint>
@@ -33,6 +37,11 @@ MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, dou
 //   params  (alpha_x, alpha_y, z_offset, -)
 //   texture (first level = vertex level, chain level count, height map, slope map (or FACET_NO_COLORMAP))
 GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& material);
+
+// The texels of one min-max chain over a width x height field: 2A, A = the largest over levels l of
+// the level's texels times 2^l, so that FACET_HEIGHTFIELD_BOUND_LEVEL(2A, l) leaves each level room
+// before the next (docs/render_speed.md, "A step of the height-field tracer").
+uint heightfield_bound_span(int width, int height);
 
 // What tracing the material's field over a rectangle of patch_size costs the GPU tracer: an upper
 // bound on the MIP nodes one ray visits (at most FACET_HEIGHTFIELD_MAX_STEPS loop steps in all fields

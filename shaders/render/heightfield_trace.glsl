@@ -11,6 +11,7 @@
 // refuses a patch whose bound on visited nodes passes it (heightfield_trace_cost).
 #ifndef FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
 #define FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
+#include "layout/heightfield_layout.glsl"
 #include "lib/heightfield_cell.glsl"
 #include "render/scene_bindings.glsl"
 
@@ -27,29 +28,36 @@ struct HeightField {
   uint vertices;  // texture level of the vertex heights
   uint bounds;    // texture level of min-max level 0 (one texel per cell); level `top` is 1 x 1
   uint dilated;   // the same bounds over each node's 3 x 3 neighbourhood: they hold the smoothed surfaces
-  uint corners;   // corners + l: the level-l surface's corner heights, l >= 1 (level 0: the vertices)
+  uint quads;     // quads + l: each level-l node's four corner heights in one texel
   int leaf;       // the level whose nodes the ray intersects (0: cells)
   float blend;    // toward the level leaf + 1 surface, in [0, 1)
+  // What stays fixed along the ray, loaded once instead of once per step: where level 0 of the bounds
+  // it tests starts (dilated when it traces a smoothed surface) and the texels of each bound chain
+  // (layout/heightfield_layout.glsl), and the records of the corner quads of levels leaf and leaf + 1
+  // (the latter only with blend > 0).
+  uint bound_base, bound_span;
+  uvec4 leaf_corners, parent_corners;
   int top;
   ivec2 size;     // cells (= vertices) of one tile
   ivec2 tiles;    // tiles over the rectangle (the last may be cut)
   vec2 range;     // z over the whole field
 };
 
-// (H1)-(H2) of docs/assets.md at texel coordinates q (vertex (i, j) at q = (i, j)) of the vertex
-// heights at texture level `vertices`: (z, dz/dx, dz/dy), z about the material's z_offset, slopes
-// per world unit (delta = texel size).
-vec3 heightfield_point(uint vertices, vec2 q, float delta) {
-  uvec4 info = texture_level_at(vertices).info;
-  int w = int(info.y), h = int(info.z);
+// The record of microsurface m's level-0 corner quads: each cell's four vertex heights in one texel
+// (renderer/gpu/microsurface_upload.hpp).
+uint heightfield_quads(GpuMaterial m) { return m.kind.z + 3u * m.kind.w - 1u; }
+
+// (H1)-(H2) of docs/assets.md at texel coordinates q (vertex (i, j) at q = (i, j)) from the level-0
+// corner quads at texture level `quads` (heightfield_quads): (z, dz/dx, dz/dy), z about the
+// material's z_offset, slopes per world unit (delta = texel size). One load, the wrap already in it.
+vec3 heightfield_point(uint quads, vec2 q, float delta) {
+  uvec4 info = texture_level_at(quads).info;
   vec2 cell = floor(q);
   vec2 f = q - cell;
-  int i0 = int(mod(cell.x, float(w))), j0 = int(mod(cell.y, float(h)));
-  int i1 = (i0 + 1) % w, j1 = (j0 + 1) % h;
-  float z00 = texel_at(info.x + uint(j0 * w + i0)).x, z10 = texel_at(info.x + uint(j0 * w + i1)).x;
-  float z01 = texel_at(info.x + uint(j1 * w + i0)).x, z11 = texel_at(info.x + uint(j1 * w + i1)).x;
-  float z = mix(mix(z00, z10, f.x), mix(z01, z11, f.x), f.y);
-  return vec3(z, mix(z10 - z00, z11 - z01, f.y) / delta, mix(z01 - z00, z11 - z10, f.x) / delta);
+  int i0 = int(mod(cell.x, float(info.y))), j0 = int(mod(cell.y, float(info.z)));
+  vec4 z = texel_at(info.x + uint(j0) * info.y + uint(i0));  // (z00, z10, z01, z11)
+  float h = mix(mix(z.x, z.y, f.x), mix(z.z, z.w, f.x), f.y);
+  return vec3(h, mix(z.y - z.x, z.w - z.z, f.y) / delta, mix(z.z - z.x, z.w - z.y, f.x) / delta);
 }
 
 // The field of microsurface m on `plane`, smoothed to level lambda (0: the field itself).
@@ -58,14 +66,19 @@ HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
   f.vertices = m.texture.x;
   f.bounds = m.kind.z;
   f.dilated = m.kind.z + m.kind.w;
-  f.corners = m.kind.z + 2u * m.kind.w - 1u;
+  f.quads = heightfield_quads(m);
   f.top = int(m.kind.w) - 1;
   f.leaf = min(int(lambda), f.top);
   f.blend = f.leaf < f.top ? lambda - float(f.leaf) : 0.0;
+  uint bounds0 = texture_level_at(f.bounds).info.x, dilated0 = texture_level_at(f.dilated).info.x;
+  f.bound_span = dilated0 - bounds0;  // the dilated chain follows the other (microsurface_upload.hpp)
+  f.bound_base = f.leaf > 0 || f.blend > 0.0 ? dilated0 : bounds0;
+  f.leaf_corners = texture_level_at(f.quads + uint(f.leaf)).info;
+  f.parent_corners = f.blend > 0.0 ? texture_level_at(f.quads + uint(f.leaf + 1)).info : uvec4(0u);
   uvec4 info = texture_level_at(f.vertices).info;
   f.size = ivec2(info.yz);
   f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
-  f.range = texel_at(texture_level_at(f.bounds + uint(f.top)).info.x).xy;
+  f.range = texel_at(bounds0 + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, f.top)).xy;
   return f;
 }
 
@@ -100,38 +113,25 @@ vec4 heightfield_extent(HeightField f, int level, ivec2 node, ivec2 tile) {
   return vec4(lo.x, hi.x, lo.y, hi.y);
 }
 
-// The corners (z00, z10, z01, z11) of the level-l surface over its node n, from the level's corner
-// grid (the last corner is the first: the field repeats).
-vec4 heightfield_node_corners(HeightField f, int level, ivec2 n) {
-  uvec4 info = texture_level_at(level == 0 ? f.vertices : f.corners + uint(level)).info;
-  ivec2 size = ivec2(info.yz), far = n + 1;
-  far = ivec2(far.x == size.x ? 0 : far.x, far.y == size.y ? 0 : far.y);
-  uint row0 = info.x + uint(n.y * size.x), row1 = info.x + uint(far.y * size.x);
-  return vec4(texel_at(row0 + uint(n.x)).x, texel_at(row0 + uint(far.x)).x, texel_at(row1 + uint(n.x)).x,
-              texel_at(row1 + uint(far.x)).x);
-}
+// The corners (z00, z10, z01, z11) of a level's surface over its node n: one texel of the level's
+// corner quads (record `info`; microsurface_upload.hpp).
+vec4 heightfield_node_corners(uvec4 info, ivec2 n) { return texel_at(info.x + uint(n.y) * info.y + uint(n.x)); }
 
 // The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e):
 // the leaf level's corners blended with the next level's surface at the same points (a bilinear
 // patch of the parent node, so the blend is bilinear over n and continuous across nodes).
 vec4 heightfield_leaf_corners(HeightField f, int level, ivec2 n, ivec2 tile, vec4 e) {
-  vec4 z = heightfield_node_corners(f, level, n);
+  vec4 z = heightfield_node_corners(f.leaf_corners, n);
   if (f.blend <= 0.0) return z;
   vec4 pe = heightfield_extent(f, level + 1, n >> 1, tile);
-  vec4 pz = heightfield_node_corners(f, level + 1, n >> 1);
+  vec4 pz = heightfield_node_corners(f.parent_corners, n >> 1);
   vec2 u = (e.xy - pe.x) / (pe.y - pe.x), v = (e.zw - pe.z) / (pe.w - pe.z);
   vec4 coarse = vec4(heightfield_bilinear(pz, u.x, v.x), heightfield_bilinear(pz, u.y, v.x),
                      heightfield_bilinear(pz, u.x, v.y), heightfield_bilinear(pz, u.y, v.y));
   return mix(z, coarse, f.blend);
 }
 
-// The record of MIP level l (<= top) of the bounds the ray tests: dilated when it traces a smoothed
-// surface.
-uvec4 heightfield_level(HeightField f, int l) {
-  return texture_level_at((f.leaf > 0 || f.blend > 0.0 ? f.dilated : f.bounds) + uint(min(l, f.top))).info;
-}
-
-// The nodes of MIP level l along each axis of a tile.
+// The nodes of MIP level l along each axis of a tile (the sizes of mip_chain_sizes: ceil(size / 2^l)).
 ivec2 heightfield_nodes_per_tile(HeightField f, int level) { return (f.size + (1 << level) - 1) >> level; }
 
 // The t where the ray crosses the plane at p of one axis (d = 0: never).
@@ -202,7 +202,7 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     float exit_x = heightfield_plane_t(r.o.x, r.d.x, r.inv_d.x, r.d.x > 0.0 ? e.y : e.x);
     float exit_y = heightfield_plane_t(r.o.y, r.d.y, r.inv_d.y, r.d.y > 0.0 ? e.w : e.z);
     float t_exit = min(min(exit_x, exit_y), t_end);
-    uvec4 record = heightfield_level(f, level);
+    ivec2 nodes = heightfield_nodes_per_tile(f, min(level, f.top));
     bool leaf = level == f.leaf;
     vec4 corners = vec4(0.0);
     vec2 z;
@@ -215,7 +215,8 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
       z = vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
                max(max(corners.x, corners.y), max(corners.z, corners.w)));
     } else {
-      z = texel_at(record.x + uint(node.y) * record.y + uint(node.x)).xy;
+      uint first = f.bound_base + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, min(level, f.top));
+      z = texel_at(first + uint(node.y * nodes.x + node.x)).xy;
     }
     vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
     float t_in = max(t, tz.x);
@@ -229,20 +230,19 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
         node = min(2 * node + half_xy, heightfield_nodes_per_tile(f, level) - 1);  // no upper half where the tile ends
         continue;
       }
-      float hit;
-      if (level == 0) {  // a cell: as the reference tests it, in texels
-        hit = heightfield_cell_hit(r.o, r.d, r.inv_d, e.x, e.z, corners, r.t_lo, r.t_hi);
-      } else {  // a node: in its own unit square
-        vec2 s = e.yw - e.xz;
-        vec3 o = vec3((r.o.xy - e.xz) / s, r.o.z), d = vec3(r.d.xy / s, r.d.z);
-        hit = heightfield_cell_hit(o, d, 1.0 / d, 0.0, 0.0, corners, r.t_lo, r.t_hi);
-      }
+      // A cell is tested as the reference tests it, in texels; a coarser node in its own unit square.
+      // One call with the arguments selected: lanes at both kinds of leaf run one copy of the test.
+      bool cell = level == 0;
+      vec2 s = e.yw - e.xz;
+      vec3 o = cell ? r.o : vec3((r.o.xy - e.xz) / s, r.o.z), d = cell ? r.d : vec3(r.d.xy / s, r.d.z);
+      vec2 corner = cell ? e.xz : vec2(0.0);
+      float hit = heightfield_cell_hit(o, d, cell ? r.inv_d : 1.0 / d, corner.x, corner.y, corners, r.t_lo, r.t_hi);
       if (hit > 0.0) return hit;
     }
     if (t_exit >= t_end) break;
     t = t_exit;
     ivec2 next = node + ivec2(exit_x == t_exit ? dir.x : 0, exit_y == t_exit ? dir.y : 0);
-    ivec2 out_of_tile = ivec2(greaterThanEqual(next, ivec2(record.yz))) - ivec2(lessThan(next, ivec2(0)));
+    ivec2 out_of_tile = ivec2(greaterThanEqual(next, nodes)) - ivec2(lessThan(next, ivec2(0)));
     if (out_of_tile != ivec2(0)) {
       tile += out_of_tile;
       if (any(lessThan(tile, ivec2(0))) || any(greaterThanEqual(tile, f.tiles))) break;

@@ -52,7 +52,7 @@ MicrosurfaceMoments microsurface_tap_moments(GpuMaterial m, vec2 q, vec2 size, f
   MicrosurfaceMoments chain = MicrosurfaceMoments(
       sample_trilinear(first, count, uv, lod), kTextureMethod >= 3u ? sample_trilinear(first + count, count, uv, lod) : vec4(0.0));
   if (point_weight <= 0.0) return chain;
-  MicrosurfaceMoments point = microsurface_point_moments(heightfield_point(m.texture.x, q, m.albedo.w));
+  MicrosurfaceMoments point = microsurface_point_moments(heightfield_point(heightfield_quads(m), q, m.albedo.w));
   return MicrosurfaceMoments(mix(chain.m0, point.m0, point_weight), mix(chain.m1, point.m1, point_weight));
 }
 
@@ -69,7 +69,7 @@ vec3 microsurface_facet_radiance(GpuMaterial m, vec3 albedo, MicrosurfaceStatist
 // the colour maps at (H1)-(H2), Lambert and the facet's own Beckmann lobe with the micro-normal n
 // (unit, facing the viewer); v, l in world space.
 vec3 microsurface_traced_radiance(GpuMaterial m, GpuPlane plane, vec2 q, vec3 n, vec3 v, vec3 l, float visibility) {
-  vec3 point = heightfield_point(m.texture.x, q, m.albedo.w);
+  vec3 point = heightfield_point(heightfield_quads(m), q, m.albedo.w);
   vec3 albedo = microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz);
   vec3 c = lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
   if (m.kind.y == 0u || visibility == 0.0) return c;
@@ -223,7 +223,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
     if (kTextureMethod == 2u) {
       vec3 chain = sample_trilinear(m.texture.x + 1u + 2u * m.texture.y, m.texture.y, tap / size, f.lod).rgb;
       if (point_weight > 0.0) {
-        vec3 point = heightfield_point(m.texture.x, tap, delta);
+        vec3 point = heightfield_point(heightfield_quads(m), tap, delta);
         chain = mix(chain, microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz), point_weight);
       }
       albedo += chain;

@@ -96,7 +96,7 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
       float lambda = smoothed ? microsurface_trace_level(m, plane, o, d, d_dx, d_dy) : 0.0;
       float t = trace_height_field(i, o, d, hit.t, lambda, q);
       if (t > t_min) {
-        vec3 s = heightfield_point(m.texture.x, q, m.albedo.w);
+        vec3 s = heightfield_point(heightfield_quads(m), q, m.albedo.w);
         vec3 normal = plane.normal.xyz - s.y * plane.tangent.xyz - s.z * cross(plane.normal.xyz, plane.tangent.xyz);
         hit = Hit(t, normal, plane.material.x, kHeightField, i, q);
       }

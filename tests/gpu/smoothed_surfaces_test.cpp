@@ -2,6 +2,7 @@
 // renderer/gpu/microsurface_upload.cpp): corner heights are the field's area means around each corner,
 // and the dilated min-max bounds of every node hold every smoothed surface the traversal can meet
 // under it, so no node that a smoothed surface crosses is culled. Brute force over small fields.
+// Also where the min-max chains lie: where the tracer computes each level to be, without overlaps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <random>
 
 #include "gpu/microsurface_upload.hpp"
+#include "layout/heightfield_layout.glsl"
 #include "scene/colormap.hpp"
 
 namespace facet {
@@ -32,6 +34,7 @@ struct Chains {
   uint32_t count() const { return material.kind.w; }
   uint32_t dilated(uint32_t l) const { return material.kind.z + count() + l; }
   uint32_t corners(uint32_t l) const { return material.kind.z + 2 * count() + l - 1; }  // l >= 1
+  uint32_t quads(uint32_t l) const { return material.kind.z + 3 * count() + l - 1; }
 };
 
 Chains chains(int width, int height, unsigned seed) {
@@ -107,6 +110,59 @@ TEST(SmoothedSurfaces, DilatedBoundsHoldEverySmoothedSurface) {
       }
   }
   EXPECT_GT(checked, 5000);
+}
+
+// A node's corner quad holds the four corners the tracer's bilinear patch over it uses: vertices
+// (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1) of its level's corner grid (level 0: the field's
+// vertices), wrapped, on a non-power-of-two field whose coarse levels wrap at cut nodes.
+TEST(SmoothedSurfaces, CornerQuadsHoldEachNodesFourCorners) {
+  const Chains c = chains(45, 38, 9);
+  int checked = 0;
+  for (uint32_t l = 0; l < c.count(); ++l) {
+    const uint32_t grid = l == 0 ? c.material.texture.x : c.corners(l);
+    const gpu::uvec4 info = c.level(grid), quads = c.level(c.quads(l));
+    ASSERT_EQ(quads.y, info.y);
+    ASSERT_EQ(quads.z, info.z);
+    const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i)
+        for (int k = 0; k < 4; ++k) {
+          const int a = (i + (k & 1)) % w, b = (j + (k >> 1)) % h;
+          EXPECT_EQ(c.texel(c.quads(l), i, j, k), c.texel(grid, a, b, 0)) << "level " << l << " node " << i << "," << j;
+          ++checked;
+        }
+  }
+  EXPECT_GT(checked, 4 * 45 * 38);
+}
+
+// The tracer finds level l of the bounds it tests at FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after
+// level 0, span = dilated level 0 - bounds level 0, with ceil(size / 2^l) nodes a row
+// (render/heightfield_trace.glsl): the records say the same, and no level overlaps another or leaves
+// its chain, on odd, one-texel-wide and non-square fields.
+TEST(SmoothedSurfaces, BoundLevelsLieWhereTheTracerComputesThem) {
+  const int sizes[][2] = {{1, 1}, {1, 7}, {3, 1}, {5, 3}, {8, 8}, {17, 4}, {33, 64}, {45, 38}};
+  for (const auto& size : sizes) {
+    const Chains c = chains(size[0], size[1], 7);
+    const uint32_t span = gpu::heightfield_bound_span(c.width, c.height);
+    const uint32_t bounds0 = c.level(c.material.kind.z).x, dilated0 = c.level(c.dilated(0)).x;
+    EXPECT_EQ(dilated0 - bounds0, span) << c.width << "x" << c.height;
+    for (const uint32_t first : {c.material.kind.z, c.dilated(0)}) {
+      const uint64_t base = c.level(first).x;
+      uint64_t end = base;  // past the last texel of the levels so far
+      for (uint32_t l = 0; l < c.count(); ++l) {
+        const gpu::uvec4 info = c.level(first + l);
+        EXPECT_EQ(info.x, base + FACET_HEIGHTFIELD_BOUND_LEVEL(span, l)) << c.width << "x" << c.height << " level " << l;
+        EXPECT_EQ(info.y, (static_cast<uint32_t>(c.width) + (1u << l) - 1) >> l);
+        EXPECT_EQ(info.z, (static_cast<uint32_t>(c.height) + (1u << l) - 1) >> l);
+        EXPECT_GE(info.x, end) << c.width << "x" << c.height << " level " << l;
+        end = info.x + static_cast<uint64_t>(info.y) * info.z;
+      }
+      EXPECT_LE(end, base + span) << c.width << "x" << c.height;
+    }
+    if (c.count() > 1) {
+      EXPECT_GE(c.level(c.corners(1)).x, dilated0 + span);
+    }
+  }
 }
 
 }  // namespace
