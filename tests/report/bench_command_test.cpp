@@ -118,8 +118,9 @@ void expect_html_report(const std::string& html, const json& results) {
     std::vector<std::string> cells = {
         number(r["time_ms"]), number(r["time_ms_min"]) + "–" + number(r["time_ms_max"]), number(r["gpu_ms"]),
         number(r["wall_ms"]), number(r["wall_ms_min"]) + "–" + number(r["wall_ms_max"]), number(r["prepare_ms"])};
-    for (const char* key : {"rmse", "rel_mse", "psnr", "max_abs", "ssim", "flip", "work_fma_per_pixel",
-                            "reads_per_pixel", "roofline_ms", "device_vs_roofline"})
+    for (const char* key : {"rmse", "rel_mse", "psnr", "max_abs", "ssim", "flip"}) cells.push_back(number(r[key]));
+    cells.push_back(r.contains("error_spearman") ? number(r["error_spearman"]) : "–");
+    for (const char* key : {"work_fma_per_pixel", "reads_per_pixel", "roofline_ms", "device_vs_roofline"})
       cells.push_back(number(r[key]));
     std::string row = "<tr><td>" + r["method"].get<std::string>() + "</td>";
     for (const std::string& cell : cells) row += "<td>" + cell + "</td>";
