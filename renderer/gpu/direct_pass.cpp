@@ -172,7 +172,9 @@ double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, st
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const int k = adaptive_samples_per_axis_;
   const auto n = static_cast<uint32_t>(count);
-  const GpuTile tile{uvec4(0, 0, n, 1), uvec4(stratum % k, stratum / k, stratum, k), spread, uvec4(n, 0, 0, 0)};
+  // The refined pixels' estimate is only written out: without an `error` channel it is left out.
+  const GpuTile tile{uvec4(0, 0, n, 1), uvec4(stratum % k, stratum / k, stratum, k), spread,
+                     uvec4(n, aovs_.error ? 0 : 1, 0, 0)};
   return kernel_.dispatch(bindings, &tile, glm::uvec3(blocks, 1, 1));
 }
 

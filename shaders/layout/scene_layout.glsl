@@ -95,7 +95,8 @@ struct GpuTile {
   uvec4 stratum;  // sx, sy in [0, K); z: the stratum's index s = sy K + sx (s > 0 adds to the tile's pixels,
                   // s = K^2 - 1 scales them by 1/K^2); w: K
   uvec4 spread;   // x: the tile's workgroups n, y: s, coprime to n: workgroup g renders block g s mod n (gpu/workgroup_order.hpp)
-  uvec4 list;     // x: 0 renders the rectangle; n > 0 renders the n pixels of the pixel list instead (filtered:adaptive)
+  uvec4 list;     // x: 0 renders the rectangle; n > 0 renders the n pixels of the pixel list instead (filtered:adaptive);
+                  // y: 1 leaves out the texture's error estimate (a refinement whose frame has no `error` channel)
 };
 
 #endif

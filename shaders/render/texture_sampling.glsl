@@ -198,9 +198,11 @@ const float kFilteredSplit = 2.0;
 // level finer), and integrates the colour map against each tap's own Gaussian: the pixel's value law
 // is the mixture of the taps' (eq. M1), not one Gaussian of the pooled moments. `spread` is the mean
 // of the taps' colour spreads (colormap_spread, eq. M2) where the error estimate is written
-// (kWritesAovs and filtered), else 0.
+// (kWritesAovs and filtered, unless the dispatch leaves it out), else 0.
 vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 spread) {
   spread = vec3(0.0);
+  // A dispatch may leave the estimate out (GpuTile::list.y; uniform, so the skipped loop costs nothing).
+  bool estimates = kWritesAovs && kTextureMethod == 3u && tile.list.y == 0u;
   GpuColormap map = colormap_record(m.texture.w);
   if (kTextureMethod == 0u) return colormap_at(map, sample_level(m.texture.x, uv).x);
   uvec4 level0 = texture_level_at(m.texture.x).info;
@@ -229,13 +231,13 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
         vec3 mean = colormap_gaussian(map, t.x, sigma);
         colour += mean;
         moments += t;
-        if (kWritesAovs && kTextureMethod == 3u) spread += colormap_spread(map, t.x, sigma, mean);
+        if (estimates) spread += colormap_spread(map, t.x, sigma, mean);
       }
     }
   }
   float count = along * split;
   vec3 albedo = colour / count;
-  if (kWritesAovs && kTextureMethod == 3u) {
+  if (estimates) {
     // eq. 4: from 1 down to 1/4 as the footprint gathers the texture's whole variance (its coarsest
     // moment level): its value distribution then tends to the texture's histogram, whose mean and
     // variance the model has.
