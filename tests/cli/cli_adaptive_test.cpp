@@ -32,8 +32,8 @@ class CliAdaptive : public ::testing::Test {
 
 TEST_F(CliAdaptive, BadMethodsAndBudgetsAreRefusedInOneLine) {
   for (const std::string options :
-       {"--method filtered --adaptive-error 0.01", "--method ss:4 --adaptive-time 100",
-        "--method filtered:adaptive:1", "--method filtered:adaptive:17", "--method filtered:adaptivex",
+       {"--method filtered --adaptive-error 0.01", "--method ss:4 --adaptive-time 100", "--method filtered:adaptive:1",
+        "--method filtered:adaptive:17", "--method filtered:adaptivex",
         "--method filtered:adaptive --adaptive-error -1", "--method filtered:adaptive --adaptive-time 0"}) {
     const auto r = render("colormap_objects.json", options);
     EXPECT_NE(r.exit_code, 0) << options;

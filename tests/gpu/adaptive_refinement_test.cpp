@@ -59,10 +59,6 @@ float max_abs_difference(const Image& a, const Image& b, std::size_t pixel) {
   return std::max({d.x, d.y, d.z, std::abs(a.alpha[pixel] - b.alpha[pixel])});
 }
 
-}  // namespace adaptive_refinement_test
-
-using namespace adaptive_refinement_test;
-
 // filtered:adaptive[:K]: K = 4 unless given, in [2, 16]; the name survives a round trip.
 TEST(AdaptiveRefinement, MethodNamesItsStrata) {
   EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive").adaptive_samples_per_axis, 4);
@@ -82,8 +78,7 @@ TEST(AdaptiveRefinement, RanksByEstimateAndCutsAtTheBudget) {
   // Error budget: every estimate above it, largest first, ties by index; NaN and zero never.
   EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, error_budget(0.15), 4), (std::vector<std::uint32_t>{1, 4, 5}));
   // Time budget alone: every positive estimate, in rank order (the time cuts the list while rendering).
-  EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, time_budget(5.0), 4),
-            (std::vector<std::uint32_t>{1, 4, 5, 0, 7}));
+  EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, time_budget(5.0), 4), (std::vector<std::uint32_t>{1, 4, 5, 0, 7}));
   // No budget: ceil(2 n / K^2) pixels, n = 8: 1 at K = 4, 4 at K = 2.
   EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, {}, 4), (std::vector<std::uint32_t>{1}));
   EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, {}, 2), (std::vector<std::uint32_t>{1, 4, 5, 0}));
@@ -125,7 +120,8 @@ TEST(AdaptiveRefinement, RefinedPixelsAreFilteredPerStratumAndTheRestFiltered) {
   EXPECT_EQ(none.refined_pixels, 0u);
   for (std::size_t i = 0; i < first.pixel_count(); ++i) ASSERT_EQ(max_abs_difference(unrefined, first, i), 0.0f);
   render(*context, scene, method("filtered:adaptive", time_budget(1e9)), &all);
-  EXPECT_EQ(all.refined_pixels, static_cast<std::size_t>(std::ranges::count_if(estimate, [](float e) { return e > 0; })));
+  EXPECT_EQ(all.refined_pixels,
+            static_cast<std::size_t>(std::ranges::count_if(estimate, [](float e) { return e > 0; })));
 }
 
 // Against a 16x16 reference: the default budget (2 more rays per pixel on average) and an error budget
@@ -150,4 +146,5 @@ TEST(AdaptiveRefinement, ConvergesTowardTheReferenceAsTheBudgetGrows) {
   EXPECT_LE(everywhere, 1.1 * strata);
 }
 
+}  // namespace adaptive_refinement_test
 }  // namespace facet
