@@ -135,8 +135,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                      [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
       diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
       pixels_(context, sizeof(vec4) * pixel_vec4s(writes_aovs_) * static_cast<uint64_t>(tile_size) * tile_size),
-      pixel_list_(vk::Buffer::from(context, std::span<const glm::uvec2>(std::vector<glm::uvec2>(
-                                                method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)))),
+      pixel_list_(vk::Buffer::of<glm::uvec2>(context, method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)),
       kernel_(timed(timings, "pipeline", [&] {
         const std::vector<uint32_t> program = direct_pass_program(scene, method);
         return vk::Kernel(context, {.name = "render_direct",
@@ -179,7 +178,7 @@ double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, st
 }
 
 void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
-                        std::span<const float> texture_error, RenderStats& stats) {
+                        std::span<const float> edge, RenderStats& stats) {
   std::vector<float> estimates(aovs.size());
   for (size_t i = 0; i < aovs.size(); ++i) estimates[i] = aovs[i].error;
   const int k = adaptive_samples_per_axis_;
@@ -206,12 +205,10 @@ void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& imag
     for (size_t j = 0; j < count; ++j) {
       const uint32_t at = chunk[j];
       const vec4 pixel = sums[j];
-      // The edge term of the first pass, over K (eq. 3), on top of the strata's own texture term.
-      const float edge = aovs[at].error - texture_error[at];
       image.set(at, counts_work_ ? image.at(at) + glm::vec3(pixel) : glm::vec3(pixel));  // work: both passes'
       image.alpha[at] = pixel.a;
       aovs[at] = aov_pixel(sums[count + j], sums[2 * count + j], std::round(pixel.a * float(k * k)), k);
-      aovs[at].error += edge / static_cast<float>(k);
+      aovs[at].error += edge[at] / static_cast<float>(k);  // the first pass's edge term over K (eq. 3)
     }
     done += count;
     ms_per_pixel = refine_ms / static_cast<double>(done);
@@ -268,13 +265,10 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
       ++local.tiles;
       if (progress) progress(local.tiles, tiles);
     }
-  if (adaptive_samples_per_axis_ > 0) {
-    std::vector<float> texture_error(aovs.size());
-    for (size_t i = 0; i < aovs.size(); ++i) texture_error[i] = aovs[i].error;
-    add_edge_error(image, aovs, k);
-    refine(bindings, image, aovs, texture_error, local);
-  } else if (aovs_.error) {
-    add_edge_error(image, aovs, k);
+  if (aovs_.error || adaptive_samples_per_axis_ > 0) {
+    const std::vector<float> edge = edge_error(image, aovs, k);
+    for (size_t i = 0; i < aovs.size(); ++i) aovs[i].error += edge[i];
+    if (adaptive_samples_per_axis_ > 0) refine(bindings, image, aovs, edge, local);
   }
   if (aovs_.any()) {
     const size_t first = add_aov_channels(image, aovs_);

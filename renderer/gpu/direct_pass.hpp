@@ -59,10 +59,11 @@ class DirectPass {
   // Renders stratum `stratum` of K x K (K = adaptive_samples_per_axis_) into pixels_ for the first
   // `count` pixels of pixel_list_; its device ms.
   double dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum);
-  // filtered:adaptive: renders the pixels with the largest estimated error (aovs[i].error) again with
-  // K x K strata, within the budget, into `image` and `aovs`; `stats` holds the first pass's time.
+  // filtered:adaptive: renders the pixels with the largest estimated error (aovs[i].error, with the
+  // first pass's edge term `edge`) again with K x K strata, within the budget, into `image` and `aovs`;
+  // `stats` holds the first pass's time.
   void refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
-              std::span<const float> texture_error, RenderStats& stats);
+              std::span<const float> edge, RenderStats& stats);
 
   const Scene* scene_;
   int tile_size_;
@@ -70,8 +71,8 @@ class DirectPass {
   AovSet aovs_;           // the auxiliary channels each frame carries
   int adaptive_samples_per_axis_;  // filtered:adaptive's K (0: not adaptive)
   AdaptiveBudget adaptive_budget_;
-  bool writes_aovs_;
-  bool counts_work_;      // the pixels hold their samples' summed work, not colours (gpu/work_per_pixel.hpp)      // the pass accumulates the auxiliary values (asked for, or filtered:adaptive's estimate)
+  bool writes_aovs_;      // the pass accumulates the auxiliary values (asked for, or filtered:adaptive's estimate)
+  bool counts_work_;      // the pixels hold their samples' summed work, not colours (gpu/work_per_pixel.hpp)
   SceneBuffers buffers_;
   DiffractionBuffers diffraction_;
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range

@@ -24,7 +24,7 @@ float mean_abs_difference(glm::vec3 a, glm::vec3 b) {
 
 }  // namespace
 
-void add_edge_error(const Image& image, std::vector<AovPixel>& pixels, int samples_per_axis) {
+std::vector<float> edge_error(const Image& image, const std::vector<AovPixel>& pixels, int samples_per_axis) {
   std::vector<float> edge(pixels.size(), 0.0f);
   const float scale = 0.25f / static_cast<float>(samples_per_axis);  // eq. 3
   for (int y = 0; y < image.height; ++y)
@@ -38,7 +38,7 @@ void add_edge_error(const Image& image, std::vector<AovPixel>& pixels, int sampl
           edge[p] = std::max(edge[p], scale * mean_abs_difference(image.at(p), image.at(q)));
       }
     }
-  for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i].error += edge[i];
+  return edge;
 }
 
 }  // namespace facet

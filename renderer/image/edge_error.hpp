@@ -11,8 +11,8 @@
 
 namespace facet {
 
-// Adds the edge term to pixels[i].error, from the image's colours and coverage and each pixel's normal
-// (pixels: one per pixel, row-major; image.alpha must be present).
-void add_edge_error(const Image& image, std::vector<AovPixel>& pixels, int samples_per_axis);
+// The edge term of each pixel, from the image's colours and coverage and each pixel's normal (pixels:
+// one per pixel, row-major; image.alpha must be present).
+std::vector<float> edge_error(const Image& image, const std::vector<AovPixel>& pixels, int samples_per_axis);
 
 }  // namespace facet

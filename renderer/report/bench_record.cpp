@@ -13,6 +13,10 @@ std::optional<double> BenchRecord::device_vs_roofline() const {
   return timing.gpu_ms.median / *limit;
 }
 
+nlohmann::json number_or_null(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
 nlohmann::json to_json(const BenchRecord& r) {
   nlohmann::json json = {
       {"scene", r.scene},   {"scene_file", r.scene_file}, {"set", r.overrides},   {"method", r.method},
@@ -38,12 +42,11 @@ nlohmann::json to_json(const BenchRecord& r) {
   json.update(facet::to_json(r.comparison));
   json["image"] = r.image;
   json["heatmap"] = r.heatmap;
-  auto optional_number = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-  json["probe_fma_per_second"] = optional_number(r.probe_fma_per_second);
-  json["work_fma_per_pixel"] = optional_number(r.work_fma_per_pixel);
-  json["reads_per_pixel"] = optional_number(r.reads_per_pixel);
-  json["roofline_ms"] = optional_number(r.roofline_ms());
-  json["device_vs_roofline"] = optional_number(r.device_vs_roofline());
+  json["probe_fma_per_second"] = number_or_null(r.probe_fma_per_second);
+  json["work_fma_per_pixel"] = number_or_null(r.work_fma_per_pixel);
+  json["reads_per_pixel"] = number_or_null(r.reads_per_pixel);
+  json["roofline_ms"] = number_or_null(r.roofline_ms());
+  json["device_vs_roofline"] = number_or_null(r.device_vs_roofline());
   if (r.error_estimate) json.update(to_json(*r.error_estimate));
   return json;
 }

@@ -52,4 +52,7 @@ struct BenchRecord {
 // results.json adds `schema` to each (report_files.hpp).
 nlohmann::json to_json(const BenchRecord& record);
 
+// A number, or null when unset: the optional figures of results.json and run.json.
+nlohmann::json number_or_null(const std::optional<double>& value);
+
 }  // namespace facet::report

@@ -91,18 +91,15 @@ nlohmann::json run_json(const BenchRun& run) {
     }
     scenes.push_back(scene);
   }
-  auto optional_number = [](const std::optional<double>& v) {
-    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-  };
   nlohmann::json stability = nlohmann::json::array();
   for (const StabilityRow& row : run.stability)
     stability.push_back({{"kernel", row.kernel},
                          {"domain", row.domain},
                          {"reference", row.reference},
                          {"measure", row.measure},
-                         {"f64", optional_number(row.f64)},
-                         {"f32", optional_number(row.f32)},
-                         {"gpu", optional_number(row.gpu)}});
+                         {"f64", number_or_null(row.f64)},
+                         {"f32", number_or_null(row.f32)},
+                         {"gpu", number_or_null(row.gpu)}});
   nlohmann::json probe = nullptr;
   if (run.probe)
     probe = {{"fma_per_second", run.probe->fma_per_second},
