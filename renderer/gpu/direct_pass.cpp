@@ -131,11 +131,14 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       adaptive_budget_(method.adaptive),
       writes_aovs_(writes_aovs(method)),
       counts_work_(method.counts_work),
-      buffers_(timed(timings, "upload",
-                     [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
-      diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
+      buffers_(
+          timed(timings, "upload",
+                [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
+      diffraction_(
+          timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
       pixels_(context, sizeof(vec4) * pixel_vec4s(writes_aovs_) * static_cast<uint64_t>(tile_size) * tile_size),
-      pixel_list_(vk::Buffer::of<glm::uvec2>(context, method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)),
+      pixel_list_(
+          vk::Buffer::of<glm::uvec2>(context, method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)),
       kernel_(timed(timings, "pipeline", [&] {
         const std::vector<uint32_t> program = direct_pass_program(scene, method);
         return vk::Kernel(context, {.name = "render_direct",
@@ -198,7 +201,8 @@ void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& imag
     std::ranges::sort(chunk);
     std::vector<glm::uvec2> positions(count);
     for (size_t j = 0; j < count; ++j)
-      positions[j] = glm::uvec2(chunk[j] % static_cast<uint32_t>(image.width), chunk[j] / static_cast<uint32_t>(image.width));
+      positions[j] =
+          glm::uvec2(chunk[j] % static_cast<uint32_t>(image.width), chunk[j] / static_cast<uint32_t>(image.width));
     pixel_list_.upload(positions.data(), sizeof(glm::uvec2) * count);
     for (int s = 0; s < k * k; ++s) refine_ms += dispatch_list(bindings, count, s);
     pixels_.download(sums.data(), sizeof(vec4) * 3 * count);

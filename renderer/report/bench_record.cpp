@@ -18,10 +18,9 @@ nlohmann::json number_or_null(const std::optional<double>& value) {
 }
 
 nlohmann::json to_json(const BenchRecord& r) {
-  nlohmann::json json = {
-      {"scene", r.scene},   {"scene_file", r.scene_file}, {"set", r.overrides},   {"method", r.method},
-      {"width", r.width},   {"height", r.height},         {"device", r.device},   {"machine", r.machine},
-      {"facet_version", r.facet_version}};
+  nlohmann::json json = {{"scene", r.scene},   {"scene_file", r.scene_file}, {"set", r.overrides},
+                         {"method", r.method}, {"width", r.width},           {"height", r.height},
+                         {"device", r.device}, {"machine", r.machine},       {"facet_version", r.facet_version}};
   if (r.error) {
     json["error"] = *r.error;
     return json;

@@ -39,7 +39,8 @@ const std::vector<MetricColumn>& metric_columns() {
       {"SSIM", [](const BenchRecord& r) { return format_3g(r.comparison.ssim); }},
       {"FLIP", [](const BenchRecord& r) { return format_3g(r.comparison.flip); }},
       // How the method's own per-pixel error estimate ranks its true error (Spearman; docs/error_estimate.md).
-      {"estimate ρ", [](const BenchRecord& r) {
+      {"estimate ρ",
+       [](const BenchRecord& r) {
          return r.error_estimate ? format_3g(r.error_estimate->spearman) : std::string("–");
        }},
       {"work FMA/px", [](const BenchRecord& r) { return format_3g(r.work_fma_per_pixel); }},
