@@ -4,6 +4,9 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
+
+#include <tbb/parallel_for.h>
 
 #include "assets/format_number.hpp"
 #include "common/error.hpp"
@@ -26,28 +29,65 @@ long long octave_frequency(const FbmParams& p, int k) {
   return std::max(1LL, std::llround(p.base_frequency * std::pow(p.lacunarity, k)));
 }
 
-// Dot product of the lattice gradient at corner (i, j) of octave k with the offset (dx, dy).
-double corner(const FbmParams& p, int k, long long frequency, long long i, long long j, double dx, double dy) {
+struct Gradient {
+  double x, y;
+};
+
+// The unit gradient at lattice point (i, j) of octave k: its angle is a hash of (seed, k, i mod f, j mod f).
+Gradient lattice_gradient(const FbmParams& p, int k, long long frequency, long long i, long long j) {
   auto wrap = [frequency](long long v) {
     return static_cast<std::uint64_t>(((v % frequency) + frequency) % frequency);
   };
   std::uint64_t h = splitmix64(splitmix64(splitmix64(p.seed ^ splitmix64(static_cast<std::uint64_t>(k))) ^ wrap(i)) ^
                                (wrap(j) << 32));
   double angle = 2.0 * std::numbers::pi * static_cast<double>(h >> 11) * 0x1.0p-53;
-  return std::cos(angle) * dx + std::sin(angle) * dy;
+  return {std::cos(angle), std::sin(angle)};
 }
 
-double gradient_noise(const FbmParams& p, int k, long long frequency, double x, double y) {
+// Gradient noise of `frequency` cells per tile at (x, y); `gradient_at(i, j)` gives the lattice gradients.
+template <class GradientAt>
+double gradient_noise(long long frequency, double x, double y, const GradientAt& gradient_at) {
   double fx = x * static_cast<double>(frequency), fy = y * static_cast<double>(frequency);
   long long i = static_cast<long long>(std::floor(fx)), j = static_cast<long long>(std::floor(fy));
   double dx = fx - static_cast<double>(i), dy = fy - static_cast<double>(j);
-  double n00 = corner(p, k, frequency, i, j, dx, dy);
-  double n10 = corner(p, k, frequency, i + 1, j, dx - 1.0, dy);
-  double n01 = corner(p, k, frequency, i, j + 1, dx, dy - 1.0);
-  double n11 = corner(p, k, frequency, i + 1, j + 1, dx - 1.0, dy - 1.0);
+  auto corner = [&](long long ci, long long cj, double ox, double oy) {
+    Gradient g = gradient_at(ci, cj);
+    return g.x * ox + g.y * oy;
+  };
+  double n00 = corner(i, j, dx, dy);
+  double n10 = corner(i + 1, j, dx - 1.0, dy);
+  double n01 = corner(i, j + 1, dx, dy - 1.0);
+  double n11 = corner(i + 1, j + 1, dx - 1.0, dy - 1.0);
   double u = fade(dx), v = fade(dy);
   return (1.0 - v) * ((1.0 - u) * n00 + u * n10) + v * ((1.0 - u) * n01 + u * n11);
 }
+
+// One octave's gradients for a whole texture. Where the lattice has no more points than 4x the
+// texels, each is hashed once and shared by the (up to four) texels around it (a sin and a cos per
+// point instead of per texel corner: the generator's cost); finer octaves hash per corner.
+class OctaveGradients {
+ public:
+  OctaveGradients(const FbmParams& p, int k, long long frequency, long long texels)
+      : p_(p), k_(k), frequency_(frequency) {
+    if (frequency * frequency > 4 * texels) return;
+    table_.resize(static_cast<std::size_t>(frequency * frequency));
+    tbb::parallel_for(0LL, frequency, [&](long long j) {
+      for (long long i = 0; i < frequency; ++i)
+        table_[static_cast<std::size_t>(j * frequency + i)] = lattice_gradient(p, k, frequency, i, j);
+    });
+  }
+  Gradient operator()(long long i, long long j) const {
+    if (table_.empty()) return lattice_gradient(p_, k_, frequency_, i, j);
+    // Texel centres lie in (0, 1), so i, j are in [0, f]; f wraps to 0.
+    return table_[static_cast<std::size_t>((j % frequency_) * frequency_ + i % frequency_)];
+  }
+
+ private:
+  const FbmParams& p_;
+  int k_;
+  long long frequency_;
+  std::vector<Gradient> table_;
+};
 
 }  // namespace
 
@@ -69,7 +109,10 @@ void validate(const FbmParams& p) {
 double fbm(const FbmParams& p, double x, double y) {
   double sum = 0.0, amplitude = 1.0;
   for (int k = 0; k < p.octaves; ++k) {
-    sum += amplitude * gradient_noise(p, k, octave_frequency(p, k), x, y);
+    long long frequency = octave_frequency(p, k);
+    sum += amplitude * gradient_noise(frequency, x, y, [&](long long i, long long j) {
+             return lattice_gradient(p, k, frequency, i, j);
+           });
     amplitude *= p.gain;
   }
   return sum;
@@ -77,10 +120,19 @@ double fbm(const FbmParams& p, double x, double y) {
 
 FbmTexture generate_fbm_noise(const FbmParams& p) {
   validate(p);
-  ScalarField field{p.width, p.height, std::vector<double>(static_cast<std::size_t>(p.width) * p.height)};
-  for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x)
-      field.values[static_cast<std::size_t>(y) * p.width + x] = fbm(p, (x + 0.5) / p.width, (y + 0.5) / p.height);
+  ScalarField field{p.width, p.height, std::vector<double>(static_cast<std::size_t>(p.width) * p.height, 0.0)};
+  // fbm() at every texel centre, octave by octave: the same sums in the same order, so bit-identical.
+  double amplitude = 1.0;
+  for (int k = 0; k < p.octaves; ++k) {
+    const long long frequency = octave_frequency(p, k);
+    const OctaveGradients gradients(p, k, frequency, static_cast<long long>(p.width) * p.height);
+    tbb::parallel_for(0, p.height, [&](int y) {
+      for (int x = 0; x < p.width; ++x)
+        field.values[static_cast<std::size_t>(y) * p.width + x] +=
+            amplitude * gradient_noise(frequency, (x + 0.5) / p.width, (y + 0.5) / p.height, gradients);
+    });
+    amplitude *= p.gain;
+  }
   auto [lo, hi] = std::minmax_element(field.values.begin(), field.values.end());
   double raw_min = *lo, raw_max = *hi;
   FbmTexture texture{std::move(field), raw_min, raw_max};
