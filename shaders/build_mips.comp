@@ -5,11 +5,14 @@
 // each child covers, so with odd sizes (parent size ceil(size / 2), a last child that covers less)
 // every texel of every level is the plain mean of the level-0 texels it covers. The same rule as the
 // CPU reference, precompute::build_moment_mips (renderer/precompute/moment_mips.cpp).
+// The texels are a storage texel buffer (RGBA32UI holding float bits), not a storage buffer: its size
+// is bounded by maxTexelBufferElements (2^27 texels on lavapipe), not maxStorageBufferRange (128 MiB),
+// so textures of 2048² and more build their chains too.
 
 #include "layout/mip_layout.glsl"
 
 layout(local_size_x = FACET_MIP_WORKGROUP, local_size_y = FACET_MIP_WORKGROUP) in;
-layout(std430, binding = FACET_MIP_BINDING_TEXELS) buffer Texels { vec4 texels[]; };
+layout(binding = FACET_MIP_BINDING_TEXELS, rgba32ui) uniform uimageBuffer texels;
 layout(push_constant) uniform Push { GpuMipStep mip_step; };
 
 // Level-0 texels along one axis covered by child texel i (span level-0 texels each, `size` in all).
@@ -24,8 +27,8 @@ void main() {
   for (uint cy = 2u * p.y; cy < min(2u * p.y + 2u, child.z); ++cy)
     for (uint cx = 2u * p.x; cx < min(2u * p.x + 2u, child.y); ++cx) {
       float weight = float(coverage(cx, child.w, mip_step.base.x) * coverage(cy, child.w, mip_step.base.y));
-      sum += weight * texels[child.x + cy * child.y + cx];
+      sum += weight * uintBitsToFloat(imageLoad(texels, int(child.x + cy * child.y + cx)));
       total += weight;
     }
-  texels[mip_step.parent.x + p.y * mip_step.parent.y + p.x] = sum / total;
+  imageStore(texels, int(mip_step.parent.x + p.y * mip_step.parent.y + p.x), floatBitsToUint(sum / total));
 }

@@ -28,7 +28,8 @@ MipBuilder::MipBuilder(vk::Context& context)
                         .buffer_count = FACET_MIP_BINDING_COUNT,
                         .push_constant_bytes = sizeof(GpuMipStep),
                         .image_count = 0,
-                        .specialization = {}}) {}
+                        .specialization = {},
+                        .buffer_kinds = {vk::BufferKind::StorageTexels}}) {}
 
 double MipBuilder::build(const vk::Buffer& texels, std::span<const GpuTextureLevel> chain) {
   std::array<const vk::Buffer*, FACET_MIP_BINDING_COUNT> bindings{};

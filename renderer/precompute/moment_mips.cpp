@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/parallel_for.h>
+
 #include "common/error.hpp"
 #include "kernels/shared.hpp"
 
@@ -71,13 +73,17 @@ MomentMips build_moment_mips(int width, int height, int channels, std::vector<do
 }
 
 std::vector<double> scalar_moment_level0(const assets::ScalarField& field) {
-  std::vector<double> level0;
-  level0.reserve(static_cast<std::size_t>(field.width) * field.height * kScalarChannels);
-  for (int y = 0; y < field.height; ++y)
+  std::vector<double> level0(static_cast<std::size_t>(field.width) * field.height * kScalarChannels);
+  // 16 bilinear samples per texel: rows in parallel (a 2048² texture is 67 M samples).
+  tbb::parallel_for(0, field.height, [&](int y) {
     for (int x = 0; x < field.width; ++x) {
       const double t = field.at(x, y);
-      level0.insert(level0.end(), {t, t * t, within_texel_variance(field, x, y)});
+      double* texel = &level0[(static_cast<std::size_t>(y) * field.width + x) * kScalarChannels];
+      texel[0] = t;
+      texel[1] = t * t;
+      texel[2] = within_texel_variance(field, x, y);
     }
+  });
   return level0;
 }
 

@@ -23,7 +23,10 @@ namespace facet::vk {
 //   Uniform   a uniform buffer (at most maxUniformBufferRange bytes, 64 KiB on lavapipe), or
 //   Texels    a uniform texel buffer (usamplerBuffer) of R32UI, RG32UI or RGBA32UI texels as wide as
 //             the buffer's elements (Buffer::texel_bytes), of any size.
-enum class BufferKind : uint32_t { Storage, Uniform, Texels };
+// and data a kernel writes that may exceed maxStorageBufferRange (128 MiB on lavapipe) as
+//   StorageTexels  a storage texel buffer (uimageBuffer) of the same texels, up to
+//                  maxTexelBufferElements of them (2^27 on lavapipe).
+enum class BufferKind : uint32_t { Storage, Uniform, Texels, StorageTexels };
 
 class Buffer {
  public:

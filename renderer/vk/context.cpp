@@ -215,7 +215,8 @@ Context::Context(const ContextOptions& options) : validation_(options.validation
     VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 256},
                                     {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 64},
                                     {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 64},
-                                    {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 256}};
+                                    {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 256},
+                                    {VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, 16}};
     VkDescriptorPoolCreateInfo descriptors{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     descriptors.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
     descriptors.maxSets = 32;

@@ -11,6 +11,7 @@ VkDescriptorType descriptor_type(BufferKind kind) {
   switch (kind) {
     case BufferKind::Uniform: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     case BufferKind::Texels: return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    case BufferKind::StorageTexels: return VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
     case BufferKind::Storage: break;
   }
   return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -22,7 +23,8 @@ std::pair<VkDeviceSize, const char*> binding_range(BufferKind kind, VkDeviceSize
                                                    const VkPhysicalDeviceLimits& limits) {
   switch (kind) {
     case BufferKind::Uniform: return {limits.maxUniformBufferRange, "uniform buffer range"};
-    case BufferKind::Texels: return {texel_bytes * limits.maxTexelBufferElements, "texel buffer size"};
+    case BufferKind::Texels:
+    case BufferKind::StorageTexels: return {texel_bytes * limits.maxTexelBufferElements, "texel buffer size"};
     case BufferKind::Storage: break;
   }
   return {limits.maxStorageBufferRange, "storage buffer range"};
@@ -147,9 +149,10 @@ double Kernel::dispatch(std::span<const Buffer* const> buffers, std::span<const 
     writes[i].dstSet = set;
     writes[i].dstBinding = i;
     writes[i].descriptorCount = 1;
-    if (i < buffers.size() && buffer_kinds_[i] == BufferKind::Texels) {
+    if (i < buffers.size() &&
+        (buffer_kinds_[i] == BufferKind::Texels || buffer_kinds_[i] == BufferKind::StorageTexels)) {
       texel_views[i] = buffers[i]->texel_view();
-      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+      writes[i].descriptorType = descriptor_type(buffer_kinds_[i]);
       writes[i].pTexelBufferView = &texel_views[i];
     } else if (i < buffers.size()) {
       buffer_infos[i] = {buffers[i]->handle(), 0, VK_WHOLE_SIZE};

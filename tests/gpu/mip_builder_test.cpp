@@ -78,5 +78,44 @@ TEST(MipBuilder, GpuChainsEqualTheCpuChains) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
+// A chain larger than a storage buffer may be (maxStorageBufferRange, 128 MiB on lavapipe): a 2560²
+// level 0 (140 MB with its levels). Level 0 holds (x, y, x + y, 1) / 2560 at texel (x, y), so a texel
+// of level l covering level-0 columns [x0, x1) and rows [y0, y1) is the plain mean
+// ((x0 + x1 - 1) / 2, (y0 + y1 - 1) / 2, their sum, 2560) / 2560: a closed form for every level.
+TEST(MipBuilder, ChainsBeyondTheStorageBufferRangeBuild) {
+  auto context = test::make_validated_context();
+  constexpr int kSide = 2560;
+  std::vector<gpu::vec4> level0(static_cast<size_t>(kSide) * kSide);
+  for (int y = 0; y < kSide; ++y)
+    for (int x = 0; x < kSide; ++x)
+      level0[static_cast<size_t>(y) * kSide + x] = gpu::vec4(x, y, x + y, kSide) / float(kSide);
+  gpu::TextureData data;
+  const gpu::uint first = gpu::append_mip_chain(data, kSide, kSide, level0);
+  level0 = {};
+  vk::Buffer buffer = vk::Buffer::from(*context, std::span<const gpu::vec4>(data.texels));
+  ASSERT_GT(buffer.size(), context->limits().maxStorageBufferRange);
+  gpu::build_gpu_mips(*context, buffer, data);
+  std::vector<gpu::vec4> result(data.texels.size());
+  buffer.download(result.data(), result.size() * sizeof(gpu::vec4));
+
+  const double eps_f = std::ldexp(1.0, -24);
+  for (gpu::uint l = 1; l < data.gpu_chains[0].y; ++l) {
+    const gpu::GpuTextureLevel& level = data.levels[first + l];
+    const int span = 1 << l;
+    const double tolerance = 4 * eps_f * static_cast<double>(l + 1) + eps_f;
+    for (gpu::uint y = 0; y < level.info.z; ++y)
+      for (gpu::uint x = 0; x < level.info.y; ++x) {
+        const double mean_x = (x * span + std::min<double>((x + 1.0) * span, kSide) - 1.0) / 2.0 / kSide;
+        const double mean_y = (y * span + std::min<double>((y + 1.0) * span, kSide) - 1.0) / 2.0 / kSide;
+        const gpu::vec4 got = result[level.info.x + static_cast<size_t>(y) * level.info.y + x];
+        ASSERT_NEAR(got.x, mean_x, tolerance) << "level " << l << " (" << x << ", " << y << ")";
+        ASSERT_NEAR(got.y, mean_y, tolerance) << "level " << l << " (" << x << ", " << y << ")";
+        ASSERT_NEAR(got.z, mean_x + mean_y, 2 * tolerance) << "level " << l << " (" << x << ", " << y << ")";
+        ASSERT_NEAR(got.w, 1.0, tolerance) << "level " << l << " (" << x << ", " << y << ")";
+      }
+  }
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
 }  // namespace
 }  // namespace facet
