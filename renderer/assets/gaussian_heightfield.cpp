@@ -5,6 +5,8 @@
 #include <numbers>
 #include <string>
 
+#include <tbb/parallel_for.h>
+
 #include "assets/format_number.hpp"
 #include "assets/real_fft2d.hpp"
 #include "assets/slope_statistics.hpp"
@@ -33,18 +35,25 @@ double quadratic(const AcfForm& a, double x, double y) { return a.xx * x * x + 2
 double wrapped_lag(int i, int n) { return i < (n + 1) / 2 ? i : i - n; }
 
 // Periodised ACF on the grid: Σ over lattice images (|m|, |n| ≤ 2; farther ones are < e^−36 σ_h²).
+// Rows in parallel; exponents past kExpUnderflow are skipped, as exp() returns exactly 0 there (and
+// takes libm's slow underflow path to do so: most of a large field's images).
 std::vector<double> periodised_acf(const GaussianHeightfieldParams& p) {
+  constexpr double kExpUnderflow = 746.0;  // exp(-746) rounds to +0 in double
   AcfForm a = acf_form(p);
   double period_x = p.width * p.texel_size, period_y = p.height * p.texel_size;
   std::vector<double> acf(static_cast<std::size_t>(p.width) * p.height);
-  for (int j = 0; j < p.height; ++j)
+  tbb::parallel_for(0, p.height, [&](int j) {
     for (int i = 0; i < p.width; ++i) {
       double tau_x = wrapped_lag(i, p.width) * p.texel_size, tau_y = wrapped_lag(j, p.height) * p.texel_size;
       double sum = 0.0;
       for (int n = -2; n <= 2; ++n)
-        for (int m = -2; m <= 2; ++m) sum += std::exp(-quadratic(a, tau_x + m * period_x, tau_y + n * period_y));
+        for (int m = -2; m <= 2; ++m) {
+          const double q = quadratic(a, tau_x + m * period_x, tau_y + n * period_y);
+          if (!(q > kExpUnderflow)) sum += std::exp(-q);
+        }
       acf[static_cast<std::size_t>(j) * p.width + i] = p.sigma_h * p.sigma_h * sum;
     }
+  });
   return acf;
 }
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <string>
 
+#include <tbb/parallel_for.h>
+
 #include "common/error.hpp"
 #include "gpu/mip_builder.hpp"
 #include "layout/heightfield_layout.glsl"
@@ -191,11 +193,13 @@ MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, dou
   const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
   MicrosurfaceLevel0 out;
   const size_t n = field.values.size();
-  out.moments.reserve(n);
-  out.slopes.reserve(n);
-  out.albedo.reserve(n);
-  for (int j = 0; j < field.height; ++j)
+  out.moments.resize(n);
+  out.slopes.resize(n);
+  out.albedo.resize(n);
+  // Rows in parallel: 4 + kAlbedoPoints² evaluations and colour-map look-ups per texel.
+  tbb::parallel_for(0, field.height, [&](int j) {
     for (int i = 0; i < field.width; ++i) {
+      const size_t texel = static_cast<size_t>(j) * field.width + i;
       const double z00 = scale * field.at(i, j) - z_offset, z10 = scale * field.wrapped(i + 1, j) - z_offset;
       const double z01 = scale * field.wrapped(i, j + 1) - z_offset,
                    z11 = scale * field.wrapped(i + 1, j + 1) - z_offset;
@@ -208,8 +212,8 @@ MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, dou
       const double sx = (p.b + 0.5 * p.e) * inv_delta, sy = (p.c + 0.5 * p.e) * inv_delta;
       const double sx2 = (p.b * p.b + p.b * p.e + p.e * p.e / 3.0) * inv_delta * inv_delta;
       const double sy2 = (p.c * p.c + p.c * p.e + p.e * p.e / 3.0) * inv_delta * inv_delta;
-      out.moments.push_back(vec4(0.25 * (z00 + z10 + z01 + z11), z2, sx, sy));
-      out.slopes.push_back(vec4(sx2, sy2, sx * sy, 0.0));
+      out.moments[texel] = vec4(0.25 * (z00 + z10 + z01 + z11), z2, sx, sy);
+      out.slopes[texel] = vec4(sx2, sy2, sx * sy, 0.0);
       glm::dvec3 albedo(0.0);
       for (int a = 0; a < kAlbedoPoints; ++a)
         for (int b = 0; b < kAlbedoPoints; ++b) {
@@ -221,8 +225,9 @@ MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, dou
           if (material.slope_colormap) c *= material.slope_colormap->at(glm::length(s));
           albedo += c;
         }
-      out.albedo.push_back(vec4(glm::vec3(albedo / double(kAlbedoPoints * kAlbedoPoints)), 0.0f));
+      out.albedo[texel] = vec4(glm::vec3(albedo / double(kAlbedoPoints * kAlbedoPoints)), 0.0f);
     }
+  });
   return out;
 }
 
