@@ -136,16 +136,22 @@ ShardPlan plan_shard(const Job& job, const Shard& shard, const std::vector<Loade
 }
 
 // `method` of the job ("reference" is the CPU reference with the job's grid and seed) prepared for
-// `scene`; null with `error` set when that fails, so each of the group's items fails with it.
+// `scene` with the job's AOVs (`error` only where the method estimates it: the `filtered` family);
+// null with `error` set when that fails, so each of the group's items fails with it.
 std::unique_ptr<frames::PreparedFrames> prepare_group(const LoadedScene& scene, const std::string& method,
                                                       const Job& job, SharedDevice& device, std::string& error) {
   error = scene.error;
   if (!scene.scene) return nullptr;
   try {
-    if (method == "reference")
-      return std::make_unique<frames::PreparedFrames>(*scene.scene, frames::ReferenceMethod{job.grid, job.seed, 0},
-                                                      nullptr);
-    const gpu::RenderMethod parsed = gpu::RenderMethod::parse(method);  // before the device: a typo needs no Vulkan
+    AovSet aovs = job.aovs;
+    if (method == "reference") {
+      aovs.error = false;
+      return std::make_unique<frames::PreparedFrames>(
+          *scene.scene, frames::ReferenceMethod{job.grid, job.seed, 0, aovs}, nullptr);
+    }
+    gpu::RenderMethod parsed = gpu::RenderMethod::parse(method);  // before the device: a typo needs no Vulkan
+    aovs.error = aovs.error && parsed.texture == gpu::RenderMethod::Texture::Filtered;
+    parsed.aovs = aovs;
     return std::make_unique<frames::PreparedFrames>(*scene.scene, parsed, &device.context());
   } catch (const std::exception& e) {
     error = e.what();

@@ -26,6 +26,7 @@ std::string item_inputs_hash(const std::string& scene_files, const Job& job, con
   field(std::to_string(item.frame));
   field(job.pixel_type);
   field(job.preview ? "preview " + std::to_string(job.exposure) : "no preview");
+  if (!job.aov.empty()) field("aov " + job.aov);  // absent: the hash of a job from before the key
   if (item.method == "reference") field("grid " + std::to_string(job.grid) + " seed " + std::to_string(job.seed));
   field(renderer_version);
   return hash.hex();

@@ -50,7 +50,7 @@ std::vector<int> read_frames(JsonObjectReader& r) {
 // The top-level keys load_job reads; no scene has any of them.
 bool is_job_key(const std::string& key) {
   static const std::set<std::string> keys{"scenes",     "methods",  "frames",   "output",    "width",   "height",
-                                          "pixel_type", "preview", "exposure", "reference", "manifest"};
+                                          "pixel_type", "preview", "exposure", "aov",       "reference", "manifest"};
   return keys.count(key) > 0;
 }
 
@@ -106,6 +106,12 @@ Job load_job(const std::filesystem::path& file, const std::vector<std::string>& 
     job.preview = r.value("preview").get<bool>();
   }
   job.exposure = r.number("exposure", job.exposure);
+  job.aov = r.string("aov", job.aov);
+  try {
+    job.aovs = parse_aovs(job.aov);
+  } catch (const Error& e) {
+    r.fail("aov", e.what());
+  }
   if (r.has("reference")) read_reference(JsonObjectReader(r.value("reference"), file.string(), "reference"), job);
   job.manifest = r.string("manifest", file.stem().string() + ".manifest.json");
   if (job.manifest.empty() || job.manifest.extension() != ".json") r.fail("manifest", "must be a path ending in .json");

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "image/aov.hpp"
+
 namespace facet::batch {
 
 struct Job {
@@ -20,6 +22,8 @@ struct Job {
   std::string pixel_type = "half";
   bool preview = true;
   double exposure = 0.0;           // of the PNG preview, in stops
+  std::string aov;                 // as `facet render --aov` ("depth,normal,uv,error"); "" = none
+  AovSet aovs{};                   // parsed from `aov`
   int grid = 32;                   // reference: N x N rays per pixel
   std::int64_t seed = 1;           // reference: jitter seed
   std::filesystem::path manifest;  // relative to the output root

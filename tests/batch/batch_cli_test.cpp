@@ -383,6 +383,35 @@ TEST_F(Batch, SetOverridesJobAndSceneKeysAndTheManifestRecordsThem) {
             (Totals{1, 0, 0, 0}));
 }
 
+// The job's `aov` key (as `facet render --aov`): every item carries the channels its method makes
+// (`error` only the `filtered` family), the filtered frame's channels equal `facet render --aov`'s,
+// changing the key renders again, and a wrong name is a one-line error naming the key.
+TEST_F(Batch, AovsGoToEveryItemThatMakesThem) {
+  const fs::path job_file = job(R"(["scenes/plane.json"])", R"(["naive", "filtered"])");
+  const fs::path out = dir_ / "out_root";
+  const std::string frame0 = "--set 'frames=[0]' ";
+  const auto first = batch(job_file, out, frame0 + "--set aov=depth,error");
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const fs::path naive = out / "out/plane/naive/00.exr", filtered = out / "out/plane/filtered/00.exr";
+  EXPECT_TRUE(exr_has_channel(naive, "Z"));
+  EXPECT_FALSE(exr_has_channel(naive, "error"));
+  const auto single =
+      run_command(kFacet + " render " + (dir_ / "scenes/plane.json").string() +
+                  " --frame 0 --method filtered --aov depth,error --width 32 --height 18 -o " + (dir_ / "f0.exr").string());
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  for (const char* channel : {"Z", "error"}) {
+    ASSERT_TRUE(exr_has_channel(filtered, channel)) << channel;
+    EXPECT_EQ(read_exr_scalar(filtered, channel).values, read_exr_scalar(dir_ / "f0.exr", channel).values) << channel;
+  }
+
+  EXPECT_EQ(totals(batch(job_file, out, frame0 + "--set aov=depth,error").err), (Totals{0, 2, 0, 0}));
+  EXPECT_EQ(totals(batch(job_file, out, frame0 + "--set aov=depth").err), (Totals{2, 0, 0, 0}));
+  const auto wrong = batch(job_file, out, frame0 + "--set aov=dept");
+  EXPECT_NE(wrong.exit_code, 0);
+  EXPECT_EQ(std::count(wrong.err.begin(), wrong.err.end(), '\n'), 1) << wrong.err;
+  EXPECT_NE(wrong.err.find("aov"), std::string::npos) << wrong.err;
+}
+
 TEST(BatchExamples, TheShippedJobsParseAndNameExistingScenes) {
   const fs::path examples = fs::path(FACET_SOURCE_DIR) / "examples";
   size_t jobs = 0;
