@@ -11,13 +11,12 @@
 
 #include "common/error.hpp"
 #include "gpu/adaptive_refinement.hpp"
+#include "gpu/direct_pass_variant.hpp"
 #include "gpu/microsurface_upload.hpp"
 #include "gpu/render_layout.hpp"
 #include "gpu/work_counter.hpp"
 #include "gpu/workgroup_order.hpp"
 #include "image/edge_error.hpp"
-#include "render_direct.spv.h"
-#include "render_direct_fields.spv.h"
 
 namespace facet::gpu {
 
@@ -25,25 +24,11 @@ namespace {
 // A tile's workgroups, numbered by 32-bit products in the shader's tile_position, stay within its bound.
 static_assert((kMaxTileSize / FACET_RENDER_WORKGROUP) * (kMaxTileSize / FACET_RENDER_WORKGROUP) <= kMaxTileBlocks);
 
-template <class M>
-bool uses(const Scene& scene) {
-  for (const Material& m : scene.materials)
-    if (std::holds_alternative<M>(m)) return true;
-  return false;
-}
-// naive, ss:K and filtered trace microsurfaces' height fields; mip and colormip shade the flat rectangle.
-bool traces_height_fields(const Scene& scene, const RenderMethod& method) {
-  return uses<MicrosurfaceMaterial>(scene) && method.texture != RenderMethod::Texture::Mip &&
-         method.texture != RenderMethod::Texture::Colormip;
-}
-
-// The program of the pass: the one that traces height fields only where the method does
-// (shaders/render/direct_pass.glsl: the tracer costs every pipeline seconds of set-up).
-// Counting work, the program with its counters' increments (gpu/work_counter.hpp).
+// The program of the pass: the smallest variant that covers the scene and the method
+// (gpu/direct_pass_variant.hpp). Counting work, the program with its counters' increments
+// (gpu/work_counter.hpp).
 std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod& method) {
-  const std::span<const uint32_t> program = traces_height_fields(scene, method)
-                                                ? std::span<const uint32_t>(render_direct_fields_spv)
-                                                : std::span<const uint32_t>(render_direct_spv);
+  const std::span<const uint32_t> program = direct_pass_variant(scene, method).spirv;
   return method.counts_work ? instrument_work_counts(program) : std::vector<uint32_t>(program.begin(), program.end());
 }
 
@@ -71,15 +56,17 @@ bool writes_aovs(const RenderMethod& method) { return method.aovs.any() || metho
 // the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
                                              const DiffractionBuffers& diffraction) {
+  const uint32_t code = direct_pass_code(scene, method);
+  const auto has = [code](uint32_t part) { return (code & part) != 0 ? 1u : 0u; };
   const auto constants = std::to_array<vk::SpecConstant>({
-      {FACET_RENDER_SPEC_HAS_MICROFLAKE, uses<MicroflakeMaterial>(scene) ? 1u : 0u},
-      {FACET_RENDER_SPEC_HAS_TEXTURE, uses<ColormapTextureMaterial>(scene) ? 1u : 0u},
+      {FACET_RENDER_SPEC_HAS_MICROFLAKE, has(FACET_CODE_MICROFLAKE)},
+      {FACET_RENDER_SPEC_HAS_TEXTURE, has(FACET_CODE_TEXTURE)},
       {FACET_RENDER_SPEC_TEXTURE_METHOD, static_cast<uint32_t>(method.texture)},
-      {FACET_RENDER_SPEC_HAS_DIFFRACTION, uses<DiffractionMaterial>(scene) ? 1u : 0u},
+      {FACET_RENDER_SPEC_HAS_DIFFRACTION, has(FACET_CODE_DIFFRACTION)},
       {FACET_RENDER_SPEC_DIFFRACTION_METHOD, static_cast<uint32_t>(diffraction.method)},
-      {FACET_RENDER_SPEC_HAS_MICROSURFACE, uses<MicrosurfaceMaterial>(scene) ? 1u : 0u},
-      {FACET_RENDER_SPEC_HAS_SPHERES, scene.spheres.empty() ? 0u : 1u},
-      {FACET_RENDER_SPEC_HAS_TRIANGLES, scene.meshes.empty() ? 0u : 1u},
+      {FACET_RENDER_SPEC_HAS_MICROSURFACE, has(FACET_CODE_MICROSURFACE)},
+      {FACET_RENDER_SPEC_HAS_SPHERES, has(FACET_CODE_SPHERES)},
+      {FACET_RENDER_SPEC_HAS_TRIANGLES, has(FACET_CODE_TRIANGLES)},
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICES, diffraction.preintegrated_slices.count},
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS, diffraction.preintegrated_slices.slice_words},
       {FACET_RENDER_SPEC_AOVS, writes_aovs(method) ? 1u : 0u},

@@ -53,6 +53,22 @@
 #define FACET_RENDER_SPEC_COUNTS_WORK 11
 #define FACET_RENDER_SPEC_COUNT 12
 
+// The code a variant of the program compiles in: its FACET_VARIANT_CODE is a sum of these
+// (render/direct_pass.glsl; shaders/CMakeLists.txt lists the variants, renderer/gpu/direct_pass_variant.hpp
+// picks the smallest that covers a scene and method). Material families, primitive kinds, the
+// filtered methods' code (filtered, filtered:table: colour-map integrals, microsurface statistics)
+// and the diffraction methods beside spectral (kDiffractionMethod), which every diffraction variant has.
+#define FACET_CODE_TEXTURE 1
+#define FACET_CODE_DIFFRACTION 2
+#define FACET_CODE_MICROFLAKE 4
+#define FACET_CODE_MICROSURFACE 8
+#define FACET_CODE_SPHERES 16
+#define FACET_CODE_TRIANGLES 32
+#define FACET_CODE_FILTERED 64
+#define FACET_CODE_DIFFRACTION_PREINTEGRATED 128
+#define FACET_CODE_DIFFRACTION_ORDERS 256
+#define FACET_CODE_ALL 511
+
 // Workgroups are FACET_RENDER_WORKGROUP x FACET_RENDER_WORKGROUP pixels of a tile.
 #define FACET_RENDER_WORKGROUP 8
 

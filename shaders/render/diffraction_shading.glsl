@@ -7,7 +7,8 @@
 //   1 preintegrated  the material's wavelength-integrated tables (diffraction_preintegrated_*), a polynomial in w
 //   2 orders     the Taylor BRDF at the wavelengths near the grating's orders (diffraction_observer);
 //                spectral where the host found restricting not worth it (not periodic, or orders unresolved: F.10, F.11)
-// The includer declares kHasDiffraction and kDiffractionMethod before including this file.
+// The includer declares kHasDiffraction and kDiffractionMethod before including this file; a variant
+// of the pass may leave preintegrated and orders out (render/variant_code.glsl).
 #ifndef FACET_RENDER_DIFFRACTION_SHADING_GLSL
 #define FACET_RENDER_DIFFRACTION_SHADING_GLSL
 #include "layout/diffraction_layout.glsl"
@@ -17,6 +18,7 @@
 #include "render/diffraction_orders.glsl"
 #include "render/diffraction_preintegrated.glsl"
 #include "render/diffraction_taylor.glsl"
+#include "render/variant_code.glsl"
 
 const uint kDiffractionSpectral = 0u;
 const uint kDiffractionPreintegrated = 1u;
@@ -40,6 +42,7 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
   GpuDiffractionMaterial m = diffraction_material_at(index);
   vec3 rgb = vec3(0.0);
   switch (kDiffractionMethod) {
+#if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_PREINTEGRATED)
     case kDiffractionPreintegrated:
       rgb = diffraction_preintegrated_rgb(
           PreintegratedSource(PreintegratedGrid(m.preintegrated_grid.xy, m.preintegrated_grid.zw, m.preintegrated_shape.x,
@@ -48,6 +51,8 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
                               m.preintegrated_scalars.z, m.preintegrated_scalars.w, m.fast_scalars.x),
           d.wi, d.wr);
       break;
+#endif
+#if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_ORDERS)
     case kDiffractionOrders:
       if (m.fast_scalars.z != 0.0) {
         DiffractionOrderLattice lattice = DiffractionOrderLattice(m.order_lattice0.xy, m.order_lattice0.z, m.order_lattice0.w,
@@ -60,6 +65,7 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
       }
       rgb = spectral_xyz_to_linear_srgb(diffraction_spectral_xyz(m, d.wi, d.wr));
       break;
+#endif
     case kDiffractionSpectral:
     default:
       rgb = spectral_xyz_to_linear_srgb(diffraction_spectral_xyz(m, d.wi, d.wr));

@@ -1,7 +1,7 @@
 // Primary rays through the scene's planes, spheres and BVH of triangles; direct lighting from the
 // directional light (with a shadow ray) plus the ambient fill, for every macro-surface material.
 // Specialization constants (ids named FACET_RENDER_SPEC_* in layout/render_layout.glsl, with the
-// binding slots and the workgroup size) compile in only what a scene and a method use:
+// binding slots and the workgroup size) select what a scene and a method use, within what the variant compiles in:
 //   kHasMicroflake     microflake half-spaces (lib/microflake_shading.glsl)
 //   kHasTexture        colour-mapped textures
 //   kTextureMethod     0 naive (finest level, colour map per sample), 1 mip (MIP-mapped texture, then
@@ -28,10 +28,13 @@
 // FACET_HEIGHT_FIELDS and so traces microsurfaces' height fields. Lavapipe compiles every call of
 // the traversal it inlines even where a specialization constant makes it dead: the tracer's three
 // calls would triple the pipeline set-up of every scene (1.4 s -> 3.4 s for colormap_objects).
+// Each program is built in variants (shaders/CMakeLists.txt) that compile in only some of the code:
+// FACET_VARIANT_HAS (render/variant_code.glsl) guards each family's, primitive kind's and method's calls.
 #ifndef FACET_RENDER_DIRECT_PASS_GLSL
 #define FACET_RENDER_DIRECT_PASS_GLSL
 
 #include "layout/render_layout.glsl"
+#include "render/variant_code.glsl"
 
 layout(local_size_x = FACET_RENDER_WORKGROUP, local_size_y = FACET_RENDER_WORKGROUP) in;
 layout(constant_id = FACET_RENDER_SPEC_HAS_MICROFLAKE) const bool kHasMicroflake = false;
@@ -112,6 +115,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
 #ifdef FACET_HEIGHT_FIELDS
   if (field_hit) return microsurface_field_radiance(m, hit, field, d, p, n, l, visibility);
 #endif
+#if FACET_VARIANT_HAS(FACET_CODE_MICROSURFACE) && !defined(FACET_HEIGHT_FIELDS)  // traced, microsurfaces are hit as fields
   if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE) {  // finite planes only (scene loader)
     GpuPlane plane = plane_at(hit.index);
     return microsurface_radiance(m, plane,
@@ -119,10 +123,14 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
                                                         camera_ray(film + vec2(0.0, pixel_step)), plane.normal.xyz),
                                  d, l, visibility, false);
   }
+#endif
+#if FACET_VARIANT_HAS(FACET_CODE_MICROFLAKE)
   if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
     return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
                                visibility, globals.ambient.rgb);
+#endif
   vec3 albedo = m.albedo.rgb;
+#if FACET_VARIANT_HAS(FACET_CODE_TEXTURE)
   if (kHasTexture && m.kind.x == FACET_MATERIAL_COLORMAP_TEXTURE) {
     SurfaceUv s = surface_uv(hit, p);
     vec2 duv_dx = vec2(0.0), duv_dy = vec2(0.0);
@@ -137,9 +145,12 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
       aov_uv_error.z = kErrorMismatch * (e.r + e.g + e.b) / 3.0;
     }
   }
+#endif
   vec3 diffracted = vec3(0.0);  // a diffraction material's albedo is its Lambertian base
+#if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION)
   if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION)
     diffracted = diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility);
+#endif
   return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb) + diffracted;
 }
 

@@ -5,6 +5,7 @@
 #define FACET_RENDER_MICROSURFACE_FIELD_GLSL
 #include "render/microsurface_shading.glsl"
 #include "render/trace.glsl"
+#include "render/variant_code.glsl"
 
 // Where a field hit is shaded from: the pixel's footprint around it, and the weight w of its traced
 // shading (1 but for filtered, which blends toward the statistics from two texels on, (T1)).
@@ -16,7 +17,9 @@ struct MicrosurfaceFieldSample {
 MicrosurfaceFieldSample microsurface_field_sample(GpuMaterial m, Hit hit, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy) {
   GpuPlane plane = plane_at(hit.index);
   MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy, plane.normal.xyz);
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
   if (kTextureMethod >= 3u) fp = microsurface_footprint_on_surface(m, plane, o, d, p, d_dx, d_dy, fp);
+#endif
   return MicrosurfaceFieldSample(fp, kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0);
 }
 
@@ -32,12 +35,14 @@ vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample
   GpuPlane plane = plane_at(hit.index);
   vec3 c = vec3(0.0);
   if (s.w > 0.0) c += s.w * microsurface_traced_radiance(m, plane, hit.barycentric, n, -d, l, visibility);
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)  // naive: s.w = 1
   if (s.w < 1.0) {
     vec3 flat_n = dot(plane.normal.xyz, d) > 0.0 ? -plane.normal.xyz : plane.normal.xyz;
     Hit flat_hit = Hit(hit.t, flat_n, hit.material, kPlane, hit.index, vec2(0.0));
     float flat_visibility = dot(flat_n, l) > 0.0 && occluded(p + flat_n * (1e-4 * max(1.0, length(p))), l, flat_hit, flat_n, false) ? 0.0 : 1.0;
     c += (1.0 - s.w) * microsurface_radiance(m, plane, s.fp, d, l, flat_visibility, true);
   }
+#endif
   return c;
 }
 

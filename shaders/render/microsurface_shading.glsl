@@ -230,7 +230,11 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
     }
   }
   MicrosurfaceStatistics stats = microsurface_statistics(sum.m0 / f.taps, sum.m1 / f.taps);
-  if (kTextureMethod >= 3u) return microsurface_filtered_radiance(m, stats, v, l, visibility);
+  // The program that traces height fields shades footprints for filtered alone; the other, for mip and
+  // colormip alone (renderer/gpu/direct_pass.cpp): each compiles only its own methods' code.
+#ifdef FACET_HEIGHT_FIELDS
+  return microsurface_filtered_radiance(m, stats, v, l, visibility);
+#else
   // mip and colormip: the mean slope as a point, no variance.
   MicrosurfaceStatistics mean_point = microsurface_point_statistics(vec3(stats.h_mean, stats.s_mean));
   if (kTextureMethod == 1u)
@@ -238,6 +242,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
   else
     albedo /= f.taps;
   return microsurface_facet_radiance(m, albedo, mean_point, v, l, visibility);
+#endif
 }
 
 #endif

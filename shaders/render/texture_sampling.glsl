@@ -8,6 +8,7 @@
 #include "lib/mip_grid.glsl"
 #include "lib/texture_footprint.glsl"
 #include "render/scene_bindings.glsl"
+#include "render/variant_code.glsl"
 
 const float kMaxAnisotropicTaps = 8.0;
 
@@ -225,6 +226,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
         colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod).rgb;
       } else if (kTextureMethod == 1u) {
         colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod).x);
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
       } else {
         vec2 t = footprint_moments(m.texture.x, m.texture.y, tap, lod, tap_major, tap_minor);
         float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
@@ -232,6 +234,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
         colour += mean;
         moments += t;
         if (estimates) spread += colormap_spread(map, t.x, sigma, mean);
+#endif
       }
     }
   }

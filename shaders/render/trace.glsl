@@ -12,6 +12,7 @@
 #include "render/heightfield_trace.glsl"
 #endif
 #include "render/scene_bindings.glsl"
+#include "render/variant_code.glsl"
 
 const float kInfinity = 1e30;
 const uint kNoHit = 0xffffffffu;
@@ -50,6 +51,7 @@ float trace_height_field(uint i, vec3 o, vec3 d, float t_max, float lambda, out 
 // The closest hit before hit.t, or with `any_hit` the first one found in traversal order (shadow
 // rays need only whether one exists; callers pass a constant, so each use compiles to one variant).
 Hit trace_triangles(vec3 o, vec3 d, Hit hit, bool any_hit) {
+#if FACET_VARIANT_HAS(FACET_CODE_TRIANGLES)
   if (!kHasTriangles || globals.counts.z == 0u) return hit;
   vec3 inv_d = 1.0 / d;
   uint stack[kStackSize];
@@ -73,6 +75,7 @@ Hit trace_triangles(vec3 o, vec3 d, Hit hit, bool any_hit) {
       stack[top++] = node.left_or_first;
     }
   }
+#endif
   return hit;
 }
 
@@ -93,7 +96,10 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
     if (is_height_field(plane, fields)) {
       vec2 q;
       GpuMaterial m = material_at(plane.material.x);
-      float lambda = smoothed ? microsurface_trace_level(m, plane, o, d, d_dx, d_dy) : 0.0;
+      float lambda = 0.0;
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+      if (smoothed) lambda = microsurface_trace_level(m, plane, o, d, d_dx, d_dy);
+#endif
       float t = trace_height_field(i, o, d, hit.t, lambda, q);
       if (t > t_min) {
         vec3 s = heightfield_point(heightfield_quads(m), q, m.albedo.w);
@@ -107,12 +113,14 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
     if (t > 0.0 && inside_plane_rectangle(plane, o + t * d))
       hit = Hit(t, plane.normal.xyz, plane.material.x, kPlane, i, vec2(0.0));
   }
+#if FACET_VARIANT_HAS(FACET_CODE_SPHERES)
   for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
     GpuSphere sphere = sphere_at(i);
     vec4 s = sphere.center_radius;
     float t = intersect_sphere(o, d, s.xyz, s.w, t_min, hit.t);
     if (t > 0.0) hit = Hit(t, o + t * d - s.xyz, sphere.material.x, kSphere, i, vec2(0.0));
   }
+#endif
   return trace_triangles(o, d, hit, false);
 }
 
@@ -138,10 +146,12 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields) {
     float t = intersect_plane(o, l, plane.point.xyz, plane.normal.xyz, 0.0, kInfinity);
     if (t > 0.0 && inside_plane_rectangle(plane, o + t * l)) return true;
   }
+#if FACET_VARIANT_HAS(FACET_CODE_SPHERES)
   for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
     vec4 s = sphere_at(i).center_radius;
     if (i != skip_sphere && intersect_sphere(o, l, s.xyz, s.w, 0.0, kInfinity) > 0.0) return true;
   }
+#endif
   return trace_triangles(o, l, Hit(kInfinity, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0)), true).material != kNoHit;
 }
 
@@ -162,6 +172,7 @@ SurfaceUv surface_uv(Hit hit, vec3 p) {
                      bitangent / scale.y);
   }
   // lavapipe runs every branch for every pixel: absent primitive kinds are compiled out here too.
+#if FACET_VARIANT_HAS(FACET_CODE_SPHERES)
   if (kHasSpheres && hit.primitive == kSphere) {
     // u: longitude about +y from +z, v: polar angle from +y (both in [0, 1]).
     vec4 s = sphere_at(hit.index).center_radius;
@@ -172,6 +183,10 @@ SurfaceUv surface_uv(Hit hit, vec3 p) {
     vec3 dpdv = FACET_PI * s.w * vec3(cos(theta) * sin(phi), -sin(theta), cos(theta) * cos(phi));
     return SurfaceUv(vec2(0.5 + phi * (0.5 * FACET_INV_PI), theta * FACET_INV_PI), dpdu, dpdv);
   }
+#endif
+#if !FACET_VARIANT_HAS(FACET_CODE_TRIANGLES)
+  return SurfaceUv(vec2(0.0), vec3(0.0), vec3(0.0));  // not reached: hits are planes or spheres
+#else
   if (!kHasTriangles) return SurfaceUv(vec2(0.0), vec3(0.0), vec3(0.0));  // not reached: hits are planes or spheres
   GpuTriangle tri = triangle_at(hit.index);
   vec2 b = hit.barycentric;
@@ -183,6 +198,7 @@ SurfaceUv surface_uv(Hit hit, vec3 p) {
   float det = duv1.x * duv2.y - duv1.y * duv2.x;
   if (abs(det) < 1e-20) return SurfaceUv(uv, vec3(0.0), vec3(0.0));
   return SurfaceUv(uv, (duv2.y * e1 - duv1.y * e2) / det, (duv1.x * e2 - duv2.x * e1) / det);
+#endif
 }
 
 #endif

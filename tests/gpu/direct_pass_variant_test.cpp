@@ -1,0 +1,119 @@
+// The direct pass's program variants (gpu/direct_pass_variant.hpp): every scene gets one that
+// compiles in all the code it runs, the smallest such, and a scene that mixes families outside
+// every smaller variant gets the one with everything, which renders the same bits.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gpu/direct_pass.hpp"
+#include "gpu/direct_pass_variant.hpp"
+#include "gpu/render_layout.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/facet_paths.hpp"
+#include "support/vulkan_fixture.hpp"
+
+namespace facet {
+namespace direct_pass_variant_test {
+
+using gpu::RenderMethod;
+
+const std::vector<std::string> kMethods = {"naive", "mip", "colormip", "filtered", "filtered:table"};
+
+std::vector<std::filesystem::path> shipped_scenes() {
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& entry : std::filesystem::directory_iterator(kScenes))
+    if (entry.path().extension() == ".json" || entry.path().extension() == ".gltf") scenes.push_back(entry.path());
+  return scenes;
+}
+
+bool covers(const gpu::DirectPassVariant& v, uint32_t code) { return (v.code & code) == code; }
+
+TEST(DirectPassVariants, EveryShippedSceneGetsASmallerVariantThatCoversIt) {
+  int fallbacks = 0, renders = 0;
+  for (const auto& file : shipped_scenes()) {
+    const Scene scene = load_scene(file);
+    for (const std::string& name : kMethods) {
+      SCOPED_TRACE(file.filename().string() + " " + name);
+      const RenderMethod method = RenderMethod::parse(name);
+      const uint32_t code = gpu::direct_pass_code(scene, method);
+      const gpu::DirectPassVariant& v = gpu::direct_pass_variant(scene, method);
+      EXPECT_TRUE(covers(v, code)) << v.name;
+      EXPECT_EQ(v.height_fields, gpu::traces_height_fields(scene, method)) << v.name;
+      ++renders;
+      if (v.code == FACET_CODE_ALL) ++fallbacks;
+    }
+  }
+  // Only the showcase mixes families no smaller variant holds (5 methods).
+  EXPECT_EQ(fallbacks, 5);
+  EXPECT_EQ(renders, static_cast<int>(shipped_scenes().size() * kMethods.size()));
+}
+
+// What each kind of scene needs, from what the scene files hold.
+TEST(DirectPassVariants, ScenesNeedTheirFamiliesPrimitivesAndMethods) {
+  const auto code = [](const char* scene, const char* method) {
+    return gpu::direct_pass_code(load_scene(kScenes / scene), RenderMethod::parse(method));
+  };
+  EXPECT_EQ(code("colormap_noise_plane.json", "naive"), uint32_t{FACET_CODE_TEXTURE});
+  EXPECT_EQ(code("colormap_noise_plane.json", "filtered:table"), uint32_t{FACET_CODE_TEXTURE | FACET_CODE_FILTERED});
+  EXPECT_EQ(code("default.json", "filtered"), uint32_t{FACET_CODE_SPHERES | FACET_CODE_TRIANGLES});
+  EXPECT_EQ(code("colormap_seams_cube.json", "mip"), uint32_t{FACET_CODE_TEXTURE | FACET_CODE_TRIANGLES});
+  EXPECT_EQ(code("microflake_blend.json", "naive"), uint32_t{FACET_CODE_MICROFLAKE | FACET_CODE_SPHERES});
+  EXPECT_EQ(code("diffraction_plate.json", "naive"), uint32_t{FACET_CODE_DIFFRACTION});
+  RenderMethod orders = RenderMethod::parse("naive");
+  orders.diffraction.method = diffraction::DiffractionMethod::Orders;
+  EXPECT_EQ(gpu::direct_pass_code(load_scene(kScenes / "snake_fingers.json"), orders),
+            uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_ORDERS | FACET_CODE_TRIANGLES});
+  EXPECT_EQ(code("microsurface_terrain.json", "filtered"), uint32_t{FACET_CODE_MICROSURFACE | FACET_CODE_FILTERED});
+  const Scene terrain = load_scene(kScenes / "microsurface_terrain.json");
+  EXPECT_TRUE(gpu::direct_pass_variant(terrain, RenderMethod::parse("naive")).height_fields);
+  EXPECT_FALSE(gpu::direct_pass_variant(terrain, RenderMethod::parse("colormip")).height_fields);
+}
+
+// The choice against a brute-force search of the table, for every combination of code.
+TEST(DirectPassVariants, TheSmallestCoveringVariantIsChosenAndMixesGetTheFallback) {
+  for (bool fields : {false, true})
+    for (uint32_t code = 0; code <= FACET_CODE_ALL; ++code) {
+      if (fields && (code & FACET_CODE_MICROSURFACE) == 0) continue;  // only microsurfaces' fields are traced
+      const gpu::DirectPassVariant& chosen = gpu::direct_pass_variant(code, fields);
+      ASSERT_TRUE(covers(chosen, code)) << code;
+      ASSERT_EQ(chosen.height_fields, fields);
+      for (const gpu::DirectPassVariant& v : gpu::direct_pass_variants()) {
+        if (v.height_fields == fields && covers(v, code)) {
+          EXPECT_LE(chosen.spirv.size(), v.spirv.size()) << code << " " << v.name;
+        }
+      }
+    }
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION, false).code,
+            uint32_t{FACET_CODE_ALL});
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES, true).code,
+            uint32_t{FACET_CODE_ALL});
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE, false).code, uint32_t{FACET_CODE_TEXTURE});
+}
+
+// An unused diffraction material puts the noise plane outside every smaller variant: the fallback
+// renders it, filtered with the error estimate, to the same bits as the textures' own variant.
+TEST(DirectPassVariants, TheFallbackRendersTheSameBitsAsTheSmallVariant) {
+  auto context = test::make_validated_context();
+  const auto file = kScenes / "colormap_noise_plane.json";
+  const Scene plain = load_scene(file);
+  const Scene mixed =
+      load_scene(file, {R"(materials.unused={"type": "diffraction", "grating": {"type": "sinusoid", "period_nm": 1000,
+             "amplitude_nm": 100, "size_um": 4, "samples": 16, "coherence_um": 2}})"});
+  RenderMethod method = RenderMethod::parse("filtered");
+  method.aovs.error = true;
+  ASSERT_EQ(gpu::direct_pass_variant(plain, method).code, uint32_t{FACET_CODE_TEXTURE | FACET_CODE_FILTERED});
+  ASSERT_EQ(gpu::direct_pass_variant(mixed, method).code, uint32_t{FACET_CODE_ALL});
+  const Image small = gpu::render_direct(*context, plain, 32, 18, method);
+  const Image fallback = gpu::render_direct(*context, mixed, 32, 18, method);
+  ASSERT_EQ(small.pixel_count(), fallback.pixel_count());
+  int differing = 0;
+  for (size_t i = 0; i < small.pixel_count(); ++i)
+    if (small.at(i) != fallback.at(i)) ++differing;
+  EXPECT_EQ(differing, 0);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+}  // namespace direct_pass_variant_test
+}  // namespace facet
