@@ -56,7 +56,8 @@ Grating procedural(JsonObjectReader& reader, const std::string& type, int& reque
     if (!(d > 0.0 && d < 1.0)) reader.fail("duty", "must lie strictly between 0 and 1");
     return d;
   };
-  // The periods along x and y (0: constant along y), then the pattern on the chosen samples.
+  // The pattern's parameters and its periods per patch along x and y (1 along y for the 1-D
+  // patterns), then the pattern on the samples those periods allow.
   double px = 0, py = 0, d = 0.5, length = 0;
   int periods_x = 1, periods_y = 1;
   if (type == "crossed") {
