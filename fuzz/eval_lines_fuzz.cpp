@@ -21,7 +21,7 @@ const std::vector<std::vector<std::string>> kCommands = {
     {"eval", "cross-section", "--method", "exact"},
     {"eval", "cross-section", "--method", "fast"},
     {"eval", "diffraction", "--grating",
-     R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":8,"samples":32})"},
+     R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":8,"samples":40})"},
     {"eval", "diffraction", "--exact", "--grating",
      R"({"type":"crossed","period_nm":[1000,1500],"amplitude_nm":100,"size_um":6,"samples":24})"},
 };

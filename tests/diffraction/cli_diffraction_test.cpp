@@ -88,5 +88,27 @@ TEST(EvalDiffractionCli, BadGratingAndExactOnGpuFailWithOneLine) {
   }
 }
 
+// A grating whose periods do not span whole samples (1200 nm on 96 samples over 12 um: 9.6 per
+// period) is raised to 120 samples: one note line on stderr, and the answers are those of the grating
+// asked for with 120 samples (bit for bit: the same field).
+TEST(EvalDiffractionCli, SamplesRaisedToWholePeriodsSayItInOneNoteLine) {
+  const std::string query = R"({"wi": [0, 0, 1], "wr": [0.4, 0.1, 0.9110433579144299], "lambda_nm": 480})"
+                            "\n";
+  auto with = [](int samples) {
+    return std::string(R"('{"type":"crossed","period_nm":[1200,2000],"amplitude_nm":100,"size_um":12,"samples":)") +
+           std::to_string(samples) + "}'";
+  };
+  const auto raised = run_command(kFacet + " eval diffraction --grating " + with(96), query);
+  const auto whole = run_command(kFacet + " eval diffraction --grating " + with(120), query);
+  ASSERT_EQ(raised.exit_code, 0) << raised.err;
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  EXPECT_EQ(raised.err,
+            "facet: note: --grating: grating.samples 96 raised to 120, so every period spans a whole number of "
+            "samples\n");
+  EXPECT_EQ(whole.err, "");
+  EXPECT_EQ(raised.out, whole.out);
+  EXPECT_GT(parse_lines(raised.out).at(0)["brdf"].get<double>(), 0.0);
+}
+
 }  // namespace
 }  // namespace facet

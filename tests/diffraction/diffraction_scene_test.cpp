@@ -12,7 +12,7 @@
 namespace facet {
 namespace diffraction_scene_test {
 
-constexpr const char* kGrating = R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":16,"samples":64})";
+constexpr const char* kGrating = R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":16,"samples":80})";
 
 nlohmann::json scene_with(const std::string& material) {
   return nlohmann::json::parse(R"({"materials": {"plate": )" + material + R"(},
@@ -34,7 +34,7 @@ TEST(DiffractionScene, ReadsEveryKey) {
                                             "base_albedo":[0.1,0.2,0.3]})"),
                               "scene.json");
   const auto& m = std::get<DiffractionMaterial>(s.materials.at(0));
-  EXPECT_EQ(m.grating->samples, 64);
+  EXPECT_EQ(m.grating->samples, 80);
   EXPECT_DOUBLE_EQ(m.grating->period_nm(), 16000.0);
   EXPECT_DOUBLE_EQ(m.tolerance, 1e-4);
   EXPECT_EQ(m.illuminant, diffraction::Illuminant::E);
@@ -61,7 +61,7 @@ TEST(DiffractionScene, GratingFileIsRelativeToTheSceneFile) {
   const auto scene = scene_with(R"({"type":"diffraction","grating":"gratings/plate.json"})");
   std::ofstream(dir / "scene.json") << scene.dump();
   const Scene s = load_scene(dir / "scene.json");
-  EXPECT_EQ(std::get<DiffractionMaterial>(s.materials.at(0)).grating->samples, 64);
+  EXPECT_EQ(std::get<DiffractionMaterial>(s.materials.at(0)).grating->samples, 80);
 }
 
 TEST(DiffractionScene, BadValuesGiveOneLineErrorsNamingTheKey) {
@@ -73,7 +73,7 @@ TEST(DiffractionScene, BadValuesGiveOneLineErrorsNamingTheKey) {
       {R"({"type":"diffraction","grating":3})", "materials.plate.grating must be a grating object or the path"},
       {R"({"type":"diffraction","grating":"missing.json"})", "materials.plate.grating: "},
       {R"({"type":"diffraction","grating":{"type":"zigzag"}})", "materials.plate.grating.type must be one of"},
-      {R"({"type":"diffraction","grating":{"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":16,"samples":64,"colour":1}})",
+      {R"({"type":"diffraction","grating":{"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":16,"samples":80,"colour":1}})",
        "unknown key \"colour\" in materials.plate.grating"},
       {"{\"type\":\"diffraction\"," + g + ",\"tolerance\":0}", "materials.plate.tolerance must lie in [1e-12, 0.1]"},
       {"{\"type\":\"diffraction\"," + g + ",\"tolerance\":0.5}", "materials.plate.tolerance must lie in [1e-12, 0.1]"},

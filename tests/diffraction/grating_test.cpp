@@ -60,6 +60,45 @@ TEST(Grating, RectangularCrossedAndFingers) {
 }
 
 // A height map with its units: EXR values times nm_per_unit, spacing nm_per_sample.
+// A sample count that leaves a period a fraction of samples is raised to the next one that does
+// not (brute force over the counts in between), with one note line; a whole count, or one whose
+// next whole count passes 4096 samples, is kept, silently. The raised field repeats with each period exactly.
+TEST(Grating, SamplesAreRaisedUntilEveryPeriodIsWhole) {
+  auto whole = [](int M, double size_nm, double period_nm) {
+    const double samples = M * period_nm / size_nm;
+    return std::abs(samples - std::round(samples)) < 1e-9;
+  };
+  testing::internal::CaptureStderr();
+  const auto c = grating(R"({"type":"crossed","period_nm":[1200,2000],"amplitude_nm":60,"size_um":12,"samples":96})");
+  const std::string note = testing::internal::GetCapturedStderr();
+  ASSERT_EQ(c.samples, 120);
+  EXPECT_DOUBLE_EQ(c.sample_nm, 100.0);
+  for (int M = 96; M < 120; ++M) EXPECT_FALSE(whole(M, 12000, 1200) && whole(M, 12000, 2000)) << M;
+  EXPECT_EQ(note,
+            "facet: note: test: grating.samples 96 raised to 120, so every period spans a whole number of samples\n");
+  for (int y = 0; y < 120; y += 7)
+    for (int x = 0; x < 120; x += 5) {
+      EXPECT_NEAR(c.height_nm[y * 120 + x], c.height_nm[y * 120 + (x + 12) % 120], 1e-9);
+      EXPECT_NEAR(c.height_nm[y * 120 + x], c.height_nm[((y + 20) % 120) * 120 + x], 1e-9);
+    }
+  EXPECT_EQ(grating(R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":8,"samples":64})").samples, 65);
+  const auto f = grating(
+      R"({"type":"fingers","period_nm":1000,"amplitude_nm":70,"size_um":6,"samples":40,"finger_length_nm":1000})");
+  EXPECT_EQ(f.samples, 42);  // 6 periods along x, 3 along y (two finger lengths)
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(grating(R"({"type":"crossed","period_nm":[1000,2000],"amplitude_nm":60,"size_um":4,"samples":64})").samples,
+            64);
+  // 239 and 240 periods: the first whole count, 57360, passes 4096.
+  EXPECT_EQ(grating(R"({"type":"crossed","period_nm":[100,99.58333333333333],"amplitude_nm":60,"size_um":23.9,)"
+                    R"("samples":1000})")
+                .samples,
+            1000);
+  // A bad grating gets its one-line error and no note.
+  EXPECT_THROW(grating(R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":60,"size_um":8,"samples":64,"colour":1})"),
+               Error);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
 TEST(Grating, HeightMapFromExr) {
   const auto dir = std::filesystem::temp_directory_path() / "facet_grating_test";
   std::filesystem::create_directories(dir);

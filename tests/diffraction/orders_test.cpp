@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
 #include <random>
 
+#include "diffraction/chebyshev_transform.hpp"
 #include "diffraction/cie_tables.hpp"
 #include "diffraction/order_wavelengths.hpp"
 #include "diffraction_cases.hpp"
 #include "orders_probe.hpp"
+#include "scene/grating/grating_patterns.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -38,8 +41,8 @@ struct Case {
   OrderWavelengths plan;
 };
 
-Case make_case(const char* json) {
-  Case c{test::grating(json), {}, {}};
+Case make_case(Grating grating) {
+  Case c{std::move(grating), {}, {}};
   TableRange range;
   range.lambda_min_nm = kCieLambdaMinNm;
   range.lambda_max_nm = kCieLambdaMaxNm;
@@ -48,6 +51,8 @@ Case make_case(const char* json) {
                                   diffraction_wavelength_samples(c.tables, kTolerance));
   return c;
 }
+
+Case make_case(const char* json) { return make_case(test::grating(json)); }
 
 glm::dvec3 spectral(const Case& c, const WavelengthSamples& s, const glm::dvec3& wi, const glm::dvec3& wr) {
   return integrate_linear_srgb(s, [&](double l) { return evaluate_taylor(c.tables, {wi, wr, l}).brdf; });
@@ -65,6 +70,24 @@ TEST(Orders, PatchRepeatsAreTheGratingsPeriods) {
                                R"("finger_length_nm":1000})");
   EXPECT_EQ(fingers.x, 4);
   EXPECT_EQ(fingers.y, 2);
+}
+
+// A sampled sinusoid of n periods over M samples, sin(2 pi n i / M), is unchanged by a shift of s
+// samples exactly when n s / M is whole (for 0 < n < M / 2), i.e. s a multiple of M / gcd(M, n): the
+// patch repeats gcd(M, n) times, n when each period spans a whole number of samples and fewer
+// otherwise (M = 96, n = 10: 9.6 samples per period, 2 repeats). Crossed fields, each axis on its own.
+TEST(Orders, PatchRepeatsOfPeriodsThatAreNotWholeSamples) {
+  for (int M : {60, 96, 120})
+    for (int nx : {4, 5, 7, 10, 12})
+      for (int ny : {3, 8, 9}) {
+        Grating g;
+        g.samples = M;
+        g.sample_nm = 100.0;
+        g.height_nm = crossed_heights({M, g.sample_nm}, 100.0 * M / nx, 100.0 * M / ny, 80.0);
+        const PatchRepeats r = patch_repeats(g);
+        EXPECT_EQ(r.x, std::gcd(M, nx)) << M << " " << nx;
+        EXPECT_EQ(r.y, std::gcd(M, ny)) << M << " " << ny;
+      }
 }
 
 // Sum over the orders within the reach's radius of k (u, v) (those whose intervals can hold the
@@ -93,11 +116,11 @@ TEST(Orders, SharesAreAPartitionOfUnity) {
 // FFT (1e-9 of the largest value over random views and wavelengths, double). The stride does skip
 // bins: with it the window visits at most ceil((2r + 1) / P) per axis.
 TEST(Orders, LatticeBinsCarryTheWholeWindowSum) {
-  // Besides the three gratings (windows of one bin): scenes/diffraction_plate.json's (r = 2, P = 64
-  // along y: the window's 5 rows shrink to one; along x 12.8 samples per period is no sample
-  // shift, so P = 1) and a window narrow enough for two lattice bins per axis (r = 2, P = 4).
+  // Besides the three gratings (windows of one bin): scenes/diffraction_plate.json's (r = 2, P = 80
+  // along y: the window's 5 rows shrink to one; along x 16 samples per period, P = 5: one column)
+  // and a window narrow enough for two lattice bins per axis (r = 2, P = 4).
   const char* plate =
-      R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":100,"size_um":8,"samples":64,"coherence_um":3.2})";
+      R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":100,"size_um":8,"samples":80,"coherence_um":3.2})";
   const char* narrow =
       R"({"type":"crossed","period_nm":[500,500],"amplitude_nm":40,"size_um":2,"samples":64,"coherence_um":0.5})";
   int most_lattice_bins = 0;
@@ -181,41 +204,50 @@ TEST(Orders, IntervalsHoldEveryReachingWavelength) {
   }
 }
 
-// Directions that put (u, v) on order m of the x period at a random wavelength, slightly off it in
-// v, or anywhere: the colours the orders path gives and the per-wavelength path at 0.25 nm agree
-// within the tolerance's budget (window truncation + midpoint rule, 2 tol of the largest channel)
-// plus the observer table's linear interpolation (1e-4 of the query's largest channel), plus the
-// tails beyond the intervals (tol^2 of the brightest query).
+// Directions that put (u, v) on order m of the x period (period_x) at a random wavelength, slightly
+// off it in v, or anywhere: the colours the orders path gives and `reference` agree within the
+// tolerance's budget (window truncation + midpoint rule, 2 tol of the largest channel) plus the
+// observer table's linear interpolation (1e-4 of the query's largest channel), plus the tails beyond
+// the intervals (tol^2 of the brightest query). Returns the worst error over the query's brightest
+// channel (queries above 1e-3 of the peak).
+template <class Reference>
+double worst_against(const Case& c, double period_x, int queries, const std::string& label,
+                     const Reference& reference) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0.0, peak = 0.0;
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> results;  // (orders, reference)
+  for (int q = 0; q < queries; ++q) {
+    const glm::dvec3 wi = direction(0.6 * unit(rng) - 0.3, 0.2 * unit(rng) - 0.1);
+    glm::dvec2 uv(2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0);
+    if (q % 3 != 2)
+      uv = glm::dvec2((q % 2 ? 1 : -1) * (400.0 + 300.0 * unit(rng)) / period_x, 0.002 * (unit(rng) - 0.5));
+    const glm::dvec2 r = -uv - glm::dvec2(wi);
+    if (glm::dot(r, r) >= 1.0) continue;
+    const glm::dvec3 wr = direction(r.x, r.y);
+    results.emplace_back(evaluate_orders(c.tables, c.plan, wi, wr), reference(wi, wr));
+    peak = std::max(peak, glm::length(results.back().second));
+  }
+  // Outside every interval the windows are below tol, so the BRDF is below tol^2 of a peak.
+  for (const auto& [got, want] : results) {
+    const double scale = std::max({std::abs(want.x), std::abs(want.y), std::abs(want.z)});
+    for (int ch = 0; ch < 3; ++ch) {
+      EXPECT_LE(std::abs(got[ch] - want[ch]), (2 * kTolerance + 1e-4) * scale + kTolerance * kTolerance * peak)
+          << label;
+      if (scale > 1e-3 * peak) worst = std::max(worst, std::abs(got[ch] - want[ch]) / scale);
+    }
+  }
+  return worst;
+}
+
 TEST(Orders, ColoursMatchTheSpectralPath) {
   for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
     const Case c = make_case(json);
     ASSERT_TRUE(c.plan.restricted) << json;
     const WavelengthSamples dense = wavelength_samples(0.25);
-    const double period_x = 2 * kPi / c.plan.lattice.frequency.x;
-    std::mt19937 rng(4);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    double worst = 0.0, peak = 0.0;
-    std::vector<std::pair<glm::dvec3, glm::dvec3>> results;  // (orders, spectral)
-    for (int q = 0; q < 60; ++q) {
-      const glm::dvec3 wi = direction(0.6 * unit(rng) - 0.3, 0.2 * unit(rng) - 0.1);
-      glm::dvec2 uv(2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0);
-      if (q % 3 != 2)
-        uv = glm::dvec2((q % 2 ? 1 : -1) * (400.0 + 300.0 * unit(rng)) / period_x, 0.002 * (unit(rng) - 0.5));
-      const glm::dvec2 r = -uv - glm::dvec2(wi);
-      if (glm::dot(r, r) >= 1.0) continue;
-      const glm::dvec3 wr = direction(r.x, r.y);
-      results.emplace_back(evaluate_orders(c.tables, c.plan, wi, wr), spectral(c, dense, wi, wr));
-      peak = std::max(peak, glm::length(results.back().second));
-    }
-    // Outside every interval the windows are below tol, so the BRDF is below tol^2 of a peak.
-    for (const auto& [got, want] : results) {
-      const double scale = std::max({std::abs(want.x), std::abs(want.y), std::abs(want.z)});
-      for (int ch = 0; ch < 3; ++ch) {
-        EXPECT_LE(std::abs(got[ch] - want[ch]), (2 * kTolerance + 1e-4) * scale + kTolerance * kTolerance * peak)
-            << json;
-        if (scale > 1e-3 * peak) worst = std::max(worst, std::abs(got[ch] - want[ch]) / scale);
-      }
-    }
+    const double worst =
+        worst_against(c, 2 * kPi / c.plan.lattice.frequency.x, 60, json,
+                      [&](const glm::dvec3& wi, const glm::dvec3& wr) { return spectral(c, dense, wi, wr); });
     std::printf("%s: worst |orders - spectral| / brightest channel (queries above 1e-3 of the peak) = %.3g\n", json,
                 worst);
   }
@@ -240,30 +272,88 @@ TEST(Orders, PeaksSitWhereTheSpectralPathPutsThem) {
   }
 }
 
-// The work the restriction saves: BRDF evaluations per pixel (nodes of all intervals) against the
-// spectral path's wavelength count at the same tolerance, averaged over the upper hemisphere of
-// views under a light at 30 degrees. Deterministic (no timing).
+// BRDF evaluations per pixel (nodes of all intervals) averaged over the upper hemisphere of views
+// under a light at 30 degrees. Deterministic (no timing).
+double nodes_per_pixel(const Case& c) {
+  const glm::dvec3 wi = direction(0.5, 0.0);
+  double nodes = 0.0;
+  int pixels = 0;
+  for (int i = -20; i <= 20; ++i)
+    for (int j = -20; j <= 20; ++j) {
+      const glm::dvec2 r(i / 21.0, j / 21.0);
+      if (glm::dot(r, r) >= 1.0) continue;
+      const glm::dvec2 uv = -r - glm::dvec2(wi);
+      const k64::DiffractionOrderSpan span = k64::diffraction_order_span(c.plan.lattice, uv);
+      for (int jy = span.lo.y; jy <= span.hi.y; ++jy)
+        for (int jx = span.lo.x; jx <= span.hi.x; ++jx)
+          nodes += k64::diffraction_order_interval(c.plan.lattice, uv, glm::ivec2(jx, jy)).nodes;
+      ++pixels;
+    }
+  return nodes / pixels;
+}
+
+// The work the restriction saves: nodes_per_pixel against the spectral path's wavelength count at
+// the same tolerance.
 TEST(Orders, EvaluatesFarFewerWavelengthsThanTheSpectralPath) {
   for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
     const Case c = make_case(json);
-    const glm::dvec3 wi = direction(0.5, 0.0);
-    double nodes = 0.0;
-    int pixels = 0;
-    for (int i = -20; i <= 20; ++i)
-      for (int j = -20; j <= 20; ++j) {
-        const glm::dvec2 r(i / 21.0, j / 21.0);
-        if (glm::dot(r, r) >= 1.0) continue;
-        const glm::dvec2 uv = -r - glm::dvec2(wi);
-        const k64::DiffractionOrderSpan span = k64::diffraction_order_span(c.plan.lattice, uv);
-        for (int jy = span.lo.y; jy <= span.hi.y; ++jy)
-          for (int jx = span.lo.x; jx <= span.hi.x; ++jx)
-            nodes += k64::diffraction_order_interval(c.plan.lattice, uv, glm::ivec2(jx, jy)).nodes;
-        ++pixels;
-      }
-    const double per_pixel = nodes / pixels, spectral_count = static_cast<double>(c.plan.fallback.lambda_nm.size());
+    const double per_pixel = nodes_per_pixel(c), spectral_count = static_cast<double>(c.plan.fallback.lambda_nm.size());
     std::printf("%s: %.1f evaluations per pixel against %.0f wavelengths\n", json, per_pixel, spectral_count);
     EXPECT_LT(per_pixel * 3.0, spectral_count) << json;
   }
+}
+
+// scenes/diffraction_crossed_rotated.json's grating (1200 x 2000 nm over 12 um, 96 samples asked).
+// Sampled at 96 (9.6 samples per x period) the patch repeats only gcd(96, 10) = 2 times along x: a
+// lattice 5x denser than the grating's, with more candidate orders per pixel than F.10 allows, so
+// `orders` was the spectral path. The parser raises the count to 120 (12 and 20 samples per period):
+// the walk is the grating's own (10, 6) lattice, agrees with the spectral path at 0.25 nm within
+// ColoursMatchTheSpectralPath's bound and with the exact transform (Chebyshev-interpolated, error
+// < 1e-12), and walks far fewer nodes. A lattice denser than the grating's is still right where the
+// window resolves it: a sinusoid of 4 periods on 62 samples (15.5 per period, 2 repeats) agrees too.
+TEST(Orders, CrossedRotatedGratingWalksItsOwnLattice) {
+  const Case whole = make_case(
+      R"({"type":"crossed","period_nm":[1200,2000],"amplitude_nm":100,"size_um":12,"samples":96,"coherence_um":6})");
+  Grating sampled = whole.grating;
+  sampled.samples = 96;
+  sampled.sample_nm = 125.0;
+  sampled.height_nm = crossed_heights({96, 125.0}, 1200.0, 2000.0, 100.0);
+  const Case aliased = make_case(sampled);
+  EXPECT_EQ(whole.grating.samples, 120);
+  EXPECT_EQ(whole.plan.lattice.repeats, glm::ivec2(10, 6));
+  EXPECT_EQ(aliased.plan.lattice.repeats, glm::ivec2(2, 6));
+  EXPECT_GT(aliased.plan.worst_orders, kMaxOrdersPerPixel);
+  EXPECT_FALSE(aliased.plan.restricted);
+  ASSERT_TRUE(whole.plan.restricted);
+  const WavelengthSamples dense = wavelength_samples(0.25);
+  const double worst = worst_against(whole, 1200.0, 60, "120 samples", [&](const glm::dvec3& wi, const glm::dvec3& wr) {
+    return spectral(whole, dense, wi, wr);
+  });
+  const ChebyshevTransform exact(whole.grating, whole.tables);
+  const double worst_exact = worst_against(whole, 1200.0, 60, "exact", [&](const glm::dvec3& wi, const glm::dvec3& wr) {
+    return integrate_linear_srgb(dense, [&](double l) { return exact.evaluate({wi, wr, l}).brdf; });
+  });
+  const double whole_nodes = nodes_per_pixel(whole), aliased_nodes = nodes_per_pixel(aliased);
+  const double spectral_count = static_cast<double>(whole.plan.fallback.lambda_nm.size());
+  std::printf(
+      "120 samples: worst |orders - spectral| / brightest channel = %.3g, |orders - exact| %.3g; evaluations "
+      "per pixel: %.1f (120 samples), %.1f (96, F.11 expects %.0f), against %.0f wavelengths\n",
+      worst, worst_exact, whole_nodes, aliased_nodes, aliased.plan.expected_nodes, spectral_count);
+  EXPECT_LT(whole_nodes * 3.0, aliased_nodes);
+  EXPECT_LT(whole_nodes * 3.0, spectral_count);
+
+  Grating sinusoid = test::grating(kSinusoid);
+  sinusoid.samples = 62;
+  sinusoid.sample_nm = 4000.0 / 62;
+  sinusoid.height_nm = sinusoid_heights({62, sinusoid.sample_nm}, 1000.0, 60.0);
+  const Case denser = make_case(sinusoid);
+  EXPECT_EQ(denser.plan.lattice.repeats, glm::ivec2(2, 62));
+  ASSERT_TRUE(denser.plan.restricted);
+  const double worst_denser =
+      worst_against(denser, 1000.0, 60, "62 samples",
+                    [&](const glm::dvec3& wi, const glm::dvec3& wr) { return spectral(denser, dense, wi, wr); });
+  std::printf("sinusoid on 62 samples (2 repeats): worst |orders - spectral| / brightest channel = %.3g\n",
+              worst_denser);
 }
 
 // F.13 against brute force: the nodes of every candidate's interval, summed per view, never exceed
@@ -271,7 +361,7 @@ TEST(Orders, EvaluatesFarFewerWavelengthsThanTheSpectralPath) {
 // low orders' intervals are the longest), for lattices with separated and with overlapping orders.
 TEST(Orders, NodesPerPixelStayWithinTheirBound) {
   const char* plate =
-      R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":100,"size_um":8,"samples":64,"coherence_um":3.2})";
+      R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":100,"size_um":8,"samples":80,"coherence_um":3.2})";
   const char* fingers = R"({"type":"fingers","period_nm":750,"amplitude_nm":80,"size_um":3,"samples":48,)"
                         R"("finger_length_nm":1500,"coherence_um":0.75})";
   for (const char* json : {kSinusoid, kRectangular, kCrossed, plate, fingers}) {

@@ -24,7 +24,8 @@ struct Grating {
 // unknown keys are errors):
 //   "type": "sinusoid" | "rectangular" | "crossed" | "fingers" | "heightmap"
 //   procedural: "period_nm" (a number, or [px, py] for "crossed"), "amplitude_nm" (peak to mean),
-//               "size_um" (must hold a whole number of periods), "samples" (8..4096),
+//               "size_um" (must hold a whole number of periods), "samples" (8..4096; raised, with one
+//               note line on stderr, to the next count giving every period a whole number of samples),
 //               "duty" (rectangular/fingers, 0..1 exclusive, default 0.5),
 //               "finger_length_nm" (fingers: length of a ridge segment along y)
 //   "heightmap": "path" (.exr, 16/8-bit grey .png, or Gwyddion .gsf), "channel" (EXR, default "Y"),
