@@ -65,12 +65,20 @@ vec3 colormap_at(GpuColormap map, float value) {
   return map.info.z == 1u ? a.rgb : mix(a.rgb, b.rgb, (t - a.w) / (b.w - a.w));
 }
 
-// colormap_knot(z), skipping its erfcx and exp beyond |z| = 8, where Phi(-|z|) < 7e-16 and
-// G(-|z|) < 1e-17 are far below float resolution: the saturated knot is exact to float there.
-ColormapKnot colormap_knot_or_saturated(float z) {
-  if (z >= 8.0) return ColormapKnot(1.0, 0.0, z, 0.0);
-  if (z <= -8.0) return ColormapKnot(0.0, 1.0, 0.0, -z);
-  return colormap_knot(z);
+// colormap_knot(z) to an absolute error below 1e-7 in Phi and |z| 1e-7 in G, from one exp and the coarse
+// tail (lib/special_functions.glsl) instead of erfcx: the knots are weighted by colours, so only absolute
+// errors count, and the approximation's error is smooth in z, so a segment's mean of Phi, a difference
+// of G over the segment's width, does not amplify it (docs/colormap_filtering.md, "Coarse knots").
+// No branch on |z| (lavapipe runs both sides of a branch that differs between lanes): far out
+// exp(-z^2/2) underflows and the knot saturates by itself.
+ColormapKnot colormap_knot_coarse(float z) {
+  float x = abs(z);
+  float e = exp(-0.5 * min(x * x, 1e30));
+  float Phi_neg = sf_normal_tail_coarse(x, e);
+  float G_neg = max(FACET_INV_SQRT2PI * e - x * Phi_neg, 0.0);
+  float Phi_pos = 1.0 - Phi_neg;
+  float G_pos = x + G_neg;
+  return z >= 0.0 ? ColormapKnot(Phi_pos, Phi_neg, G_pos, G_neg) : ColormapKnot(Phi_neg, Phi_pos, G_neg, G_pos);
 }
 
 // The first control point in [first, last] whose position exceeds `position` (last if none).
@@ -98,12 +106,12 @@ vec3 colormap_filtered(GpuColormap map, float mu, float sigma) {
   uint end = colormap_first_point_above(begin, last, m + reach);
   vec4 a = colormap_point(begin);
   float za = colormap_standardize(a.w, m, s);
-  ColormapKnot knot_a = colormap_knot_or_saturated(za);
+  ColormapKnot knot_a = colormap_knot_coarse(za);
   vec3 sum = a.rgb * knot_a.Phi;
   for (uint i = begin; i < end; ++i) {
     vec4 b = colormap_point(i + 1u);
     float zb = colormap_standardize(b.w, m, s);
-    ColormapKnot knot_b = colormap_knot_or_saturated(zb);
+    ColormapKnot knot_b = colormap_knot_coarse(zb);
     sum += colormap_segment_from_knots(knot_a, knot_b, za, zb, a.rgb, map.info.z == 1u ? a.rgb : b.rgb);
     a = b;
     za = zb;
@@ -166,12 +174,12 @@ vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
   vec4 a = colormap_point(first);
   float za = colormap_standardize(a.w, m, s);
-  ColormapKnot ka = colormap_knot_or_saturated(za);
+  ColormapKnot ka = colormap_knot_coarse(za);
   vec3 second = a.rgb * a.rgb * ka.Phi;
   for (uint i = first; i < last; ++i) {
     vec4 b = colormap_point(i + 1u);
     float zb = colormap_standardize(b.w, m, s);
-    ColormapKnot kb = colormap_knot_or_saturated(zb);
+    ColormapKnot kb = colormap_knot_coarse(zb);
     bool linear = map.info.z != 1u && zb > za;
     vec3 q = linear ? (b.rgb - a.rgb) / (zb - za) : vec3(0.0);
     vec3 p = a.rgb - q * za;  // the colour at z = 0 (t = mu)
