@@ -22,12 +22,23 @@ struct TexelQuad {
   vec2 f;
 };
 
-TexelQuad texel_quad(uint level, vec2 uv) {
+// A level's record and its chain's level-0 size (info.w is the level's index in its chain, 0 for a
+// lone level, whose level 0 is the record `level - info.w`): read once per pixel where its taps share it.
+struct TextureLevel {
+  uvec4 info;
+  uvec2 size0;
+};
+
+TextureLevel texture_level(uint level) {
   uvec4 info = texture_level_at(level).info;
-  uvec2 size0 = info.w == 0u ? info.yz : texture_level_at(level - info.w).info.yz;
+  return TextureLevel(info, info.w == 0u ? info.yz : texture_level_at(level - info.w).info.yz);
+}
+
+TexelQuad texel_quad(TextureLevel level, vec2 uv) {
+  uvec4 info = level.info;
   int span = 1 << info.w;
-  MipAxisTaps x = mip_axis_taps(uv.x, int(size0.x), span, int(info.y));
-  MipAxisTaps y = mip_axis_taps(uv.y, int(size0.y), span, int(info.z));
+  MipAxisTaps x = mip_axis_taps(uv.x, int(level.size0.x), span, int(info.y));
+  MipAxisTaps y = mip_axis_taps(uv.y, int(level.size0.y), span, int(info.z));
   uint row0 = info.x + uint(y.i0) * info.y, row1 = info.x + uint(y.i1) * info.y;
   return TexelQuad(texel_at(row0 + uint(x.i0)), texel_at(row0 + uint(x.i1)), texel_at(row1 + uint(x.i0)),
                    texel_at(row1 + uint(x.i1)), vec2(x.w1, y.w1));
@@ -36,7 +47,7 @@ TexelQuad texel_quad(uint level, vec2 uv) {
 vec4 bilinear(TexelQuad q) { return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t11, q.f.x), q.f.y); }
 
 // Bilinear between texel centres, periodic (at level 0 as renderer/cpu/material_shading.cpp).
-vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(level, uv)); }
+vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(texture_level(level), uv)); }
 
 vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod) {
   float l0 = floor(lod);
@@ -140,28 +151,43 @@ vec3 colormap_gaussian(GpuColormap map, float mu, float sigma) {
   return colormap_filtered(map, mu, sigma);
 }
 
-// (E[t], E[t^2]) of the texture over one tap (axes axis_a, axis_b in level-0 texels) at `lod`
+// The one or two moment levels of a footprint's taps (they share lod): `fine` at floor(lod), `coarse`
+// the next one, blended by `blend` (0: `fine` alone, at the chain's end or at an integral lod).
+struct MomentLevels {
+  TextureLevel fine;
+  TextureLevel coarse;
+  bool level0;
+  float blend;
+};
+
+MomentLevels moment_levels(uint first, uint count, float lod) {
+  float l0 = floor(lod);
+  uint level = uint(l0);
+  bool blends = level + 1u < count && lod != l0;
+  return MomentLevels(texture_level(first + level), texture_level(first + min(level + 1u, count - 1u)), level == 0u,
+                      blends ? lod - l0 : 0.0);
+}
+
+// (E[t], E[t^2]) of the texture over one tap (axes axis_a, axis_b in level-0 texels) at `levels`
 // (docs/colormap_filtering.md, "Footprint variance"). Level l >= 1: the box-filtered sample moments
 // plus the mean within-texel variance (channel z). Level 0 stands for taps up to 2 texels wide: the
 // bilinear texture there is linearised at the tap (lib/texture_footprint.glsl), so the variance
 // vanishes with the tap and `filtered` tends to `naive` under magnification.
-vec2 footprint_moments(uint first, uint count, vec2 uv, float lod, vec2 axis_a, vec2 axis_b) {
-  float l0 = floor(lod);
-  uint level = uint(l0);
+vec2 footprint_moments(MomentLevels levels, vec2 uv, vec2 axis_a, vec2 axis_b) {
   // One quad of texels serves both cases: lavapipe runs both sides of a branch, so a lookup per
   // side would cost two.
-  TexelQuad q = texel_quad(first + level, uv);
+  TexelQuad q = texel_quad(levels.fine, uv);
   vec4 s = bilinear(q);
   vec2 a;
-  if (level == 0u) {
+  if (levels.level0) {
     vec2 gradient = vec2(mix(q.t10.x - q.t00.x, q.t11.x - q.t01.x, q.f.y), mix(q.t01.x - q.t00.x, q.t11.x - q.t10.x, q.f.x));
     a = vec2(s.x, s.x * s.x + linearised_tap_variance(gradient, axis_a, axis_b));
   } else {
     a = vec2(s.x, s.y + s.z);
   }
-  if (level + 1u >= count || lod == l0) return a;  // integral lod: one level
-  vec4 b = sample_level(first + level + 1u, uv);
-  return mix(a, vec2(b.x, b.y + b.z), lod - l0);
+  if (levels.blend == 0.0) return a;
+  vec4 b = bilinear(texel_quad(levels.coarse, uv));
+  return mix(a, vec2(b.x, b.y + b.z), levels.blend);
 }
 
 // The spread of the mapped colour under t ~ N(mu, sigma^2): sqrt(E[colormap(t)^2] - mean^2) per channel
@@ -226,6 +252,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   vec2 tap_major = f.major * size / along, tap_minor = f.minor * size / split;  // one tap's axes, in texels
   vec3 colour = vec3(0.0);
   vec2 moments = vec2(0.0);
+  MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
   for (float k = 0.0; k < along; k += 1.0) {
     for (float j = 0.0; j < split; j += 1.0) {
       vec2 tap = uv + f.major * ((k + 0.5) / along - 0.5) + f.minor * ((j + 0.5) / split - 0.5);
@@ -234,7 +261,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
       } else if (kTextureMethod == 1u) {
         colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod).x);
       } else {
-        vec2 t = footprint_moments(m.texture.x, m.texture.y, tap, lod, tap_major, tap_minor);
+        vec2 t = footprint_moments(levels, tap, tap_major, tap_minor);
         float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
         vec3 mean = colormap_gaussian(map, t.x, sigma);
         colour += mean;
