@@ -23,12 +23,23 @@ struct TexelQuad {
   vec2 f;
 };
 
-TexelQuad texel_quad(uint level, vec2 uv) {
+// A level's record and its chain's level-0 size (info.w is the level's index in its chain, 0 for a
+// lone level, whose level 0 is the record `level - info.w`): read once per pixel where its taps share it.
+struct TextureLevel {
+  uvec4 info;
+  uvec2 size0;
+};
+
+TextureLevel texture_level(uint level) {
   uvec4 info = texture_level_at(level).info;
-  uvec2 size0 = info.w == 0u ? info.yz : texture_level_at(level - info.w).info.yz;
+  return TextureLevel(info, info.w == 0u ? info.yz : texture_level_at(level - info.w).info.yz);
+}
+
+TexelQuad texel_quad(TextureLevel level, vec2 uv) {
+  uvec4 info = level.info;
   int span = 1 << info.w;
-  MipAxisTaps x = mip_axis_taps(uv.x, int(size0.x), span, int(info.y));
-  MipAxisTaps y = mip_axis_taps(uv.y, int(size0.y), span, int(info.z));
+  MipAxisTaps x = mip_axis_taps(uv.x, int(level.size0.x), span, int(info.y));
+  MipAxisTaps y = mip_axis_taps(uv.y, int(level.size0.y), span, int(info.z));
   uint row0 = info.x + uint(y.i0) * info.y, row1 = info.x + uint(y.i1) * info.y;
   return TexelQuad(texel_at(row0 + uint(x.i0)), texel_at(row0 + uint(x.i1)), texel_at(row1 + uint(x.i0)),
                    texel_at(row1 + uint(x.i1)), vec2(x.w1, y.w1));
@@ -37,7 +48,7 @@ TexelQuad texel_quad(uint level, vec2 uv) {
 vec4 bilinear(TexelQuad q) { return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t11, q.f.x), q.f.y); }
 
 // Bilinear between texel centres, periodic (at level 0 as renderer/cpu/material_shading.cpp).
-vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(level, uv)); }
+vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(texture_level(level), uv)); }
 
 vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod) {
   float l0 = floor(lod);
@@ -66,12 +77,20 @@ vec3 colormap_at(GpuColormap map, float value) {
   return map.info.z == 1u ? a.rgb : mix(a.rgb, b.rgb, (t - a.w) / (b.w - a.w));
 }
 
-// colormap_knot(z), skipping its erfcx and exp beyond |z| = 8, where Phi(-|z|) < 7e-16 and
-// G(-|z|) < 1e-17 are far below float resolution: the saturated knot is exact to float there.
-ColormapKnot colormap_knot_or_saturated(float z) {
-  if (z >= 8.0) return ColormapKnot(1.0, 0.0, z, 0.0);
-  if (z <= -8.0) return ColormapKnot(0.0, 1.0, 0.0, -z);
-  return colormap_knot(z);
+// colormap_knot(z) to an absolute error below 1e-7 in Phi and |z| 1e-7 in G, from one exp and the coarse
+// tail (lib/special_functions.glsl) instead of erfcx: the knots are weighted by colours, so only absolute
+// errors count, and the approximation's error is smooth in z, so a segment's mean of Phi, a difference
+// of G over the segment's width, does not amplify it (docs/colormap_filtering.md, "Coarse knots").
+// No branch on |z| (lavapipe runs both sides of a branch that differs between lanes): far out
+// exp(-z^2/2) underflows and the knot saturates by itself.
+ColormapKnot colormap_knot_coarse(float z) {
+  float x = abs(z);
+  float e = exp(-0.5 * min(x * x, 1e30));
+  float Phi_neg = sf_normal_tail_coarse(x, e);
+  float G_neg = max(FACET_INV_SQRT2PI * e - x * Phi_neg, 0.0);
+  float Phi_pos = 1.0 - Phi_neg;
+  float G_pos = x + G_neg;
+  return z >= 0.0 ? ColormapKnot(Phi_pos, Phi_neg, G_pos, G_neg) : ColormapKnot(Phi_neg, Phi_pos, G_neg, G_pos);
 }
 
 // The first control point in [first, last] whose position exceeds `position` (last if none).
@@ -99,12 +118,12 @@ vec3 colormap_filtered(GpuColormap map, float mu, float sigma) {
   uint end = colormap_first_point_above(begin, last, m + reach);
   vec4 a = colormap_point(begin);
   float za = colormap_standardize(a.w, m, s);
-  ColormapKnot knot_a = colormap_knot_or_saturated(za);
+  ColormapKnot knot_a = colormap_knot_coarse(za);
   vec3 sum = a.rgb * knot_a.Phi;
   for (uint i = begin; i < end; ++i) {
     vec4 b = colormap_point(i + 1u);
     float zb = colormap_standardize(b.w, m, s);
-    ColormapKnot knot_b = colormap_knot_or_saturated(zb);
+    ColormapKnot knot_b = colormap_knot_coarse(zb);
     sum += colormap_segment_from_knots(knot_a, knot_b, za, zb, a.rgb, map.info.z == 1u ? a.rgb : b.rgb);
     a = b;
     za = zb;
@@ -133,28 +152,43 @@ vec3 colormap_gaussian(GpuColormap map, float mu, float sigma) {
   return colormap_filtered(map, mu, sigma);
 }
 
-// (E[t], E[t^2]) of the texture over one tap (axes axis_a, axis_b in level-0 texels) at `lod`
+// The one or two moment levels of a footprint's taps (they share lod): `fine` at floor(lod), `coarse`
+// the next one, blended by `blend` (0: `fine` alone, at the chain's end or at an integral lod).
+struct MomentLevels {
+  TextureLevel fine;
+  TextureLevel coarse;
+  bool level0;
+  float blend;
+};
+
+MomentLevels moment_levels(uint first, uint count, float lod) {
+  float l0 = floor(lod);
+  uint level = uint(l0);
+  bool blends = level + 1u < count && lod != l0;
+  return MomentLevels(texture_level(first + level), texture_level(first + min(level + 1u, count - 1u)), level == 0u,
+                      blends ? lod - l0 : 0.0);
+}
+
+// (E[t], E[t^2]) of the texture over one tap (axes axis_a, axis_b in level-0 texels) at `levels`
 // (docs/colormap_filtering.md, "Footprint variance"). Level l >= 1: the box-filtered sample moments
 // plus the mean within-texel variance (channel z). Level 0 stands for taps up to 2 texels wide: the
 // bilinear texture there is linearised at the tap (lib/texture_footprint.glsl), so the variance
 // vanishes with the tap and `filtered` tends to `naive` under magnification.
-vec2 footprint_moments(uint first, uint count, vec2 uv, float lod, vec2 axis_a, vec2 axis_b) {
-  float l0 = floor(lod);
-  uint level = uint(l0);
+vec2 footprint_moments(MomentLevels levels, vec2 uv, vec2 axis_a, vec2 axis_b) {
   // One quad of texels serves both cases: lavapipe runs both sides of a branch, so a lookup per
   // side would cost two.
-  TexelQuad q = texel_quad(first + level, uv);
+  TexelQuad q = texel_quad(levels.fine, uv);
   vec4 s = bilinear(q);
   vec2 a;
-  if (level == 0u) {
+  if (levels.level0) {
     vec2 gradient = vec2(mix(q.t10.x - q.t00.x, q.t11.x - q.t01.x, q.f.y), mix(q.t01.x - q.t00.x, q.t11.x - q.t10.x, q.f.x));
     a = vec2(s.x, s.x * s.x + linearised_tap_variance(gradient, axis_a, axis_b));
   } else {
     a = vec2(s.x, s.y + s.z);
   }
-  if (level + 1u >= count || lod == l0) return a;  // integral lod: one level
-  vec4 b = sample_level(first + level + 1u, uv);
-  return mix(a, vec2(b.x, b.y + b.z), lod - l0);
+  if (levels.blend == 0.0) return a;
+  vec4 b = bilinear(texel_quad(levels.coarse, uv));
+  return mix(a, vec2(b.x, b.y + b.z), levels.blend);
 }
 
 // The spread of the mapped colour under t ~ N(mu, sigma^2): sqrt(E[colormap(t)^2] - mean^2) per channel
@@ -167,12 +201,12 @@ vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
   vec4 a = colormap_point(first);
   float za = colormap_standardize(a.w, m, s);
-  ColormapKnot ka = colormap_knot_or_saturated(za);
+  ColormapKnot ka = colormap_knot_coarse(za);
   vec3 second = a.rgb * a.rgb * ka.Phi;
   for (uint i = first; i < last; ++i) {
     vec4 b = colormap_point(i + 1u);
     float zb = colormap_standardize(b.w, m, s);
-    ColormapKnot kb = colormap_knot_or_saturated(zb);
+    ColormapKnot kb = colormap_knot_coarse(zb);
     bool linear = map.info.z != 1u && zb > za;
     vec3 q = linear ? (b.rgb - a.rgb) / (zb - za) : vec3(0.0);
     vec3 p = a.rgb - q * za;  // the colour at z = 0 (t = mu)
@@ -219,6 +253,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   vec2 tap_major = f.major * size / along, tap_minor = f.minor * size / split;  // one tap's axes, in texels
   vec3 colour = vec3(0.0);
   vec2 moments = vec2(0.0);
+  MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
   for (float k = 0.0; k < along; k += 1.0) {
     for (float j = 0.0; j < split; j += 1.0) {
       vec2 tap = uv + f.major * ((k + 0.5) / along - 0.5) + f.minor * ((j + 0.5) / split - 0.5);
@@ -228,7 +263,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
         colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod).x);
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
       } else {
-        vec2 t = footprint_moments(m.texture.x, m.texture.y, tap, lod, tap_major, tap_minor);
+        vec2 t = footprint_moments(levels, tap, tap_major, tap_minor);
         float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
         vec3 mean = colormap_gaussian(map, t.x, sigma);
         colour += mean;
