@@ -217,8 +217,11 @@ glm::dvec3 colour_variance_by_quadrature(const Colormap& map, double mu, double 
 
 // colormap_spread on the GPU (float) squared against the variance by quadrature (double), on a step
 // map and a linear map with a shifted domain, sigma from 1e-3 to 2 domain widths. Float cancellation in
-// E[c^2] - E[c]^2 bounds the agreement of the variances, not of their roots: 2e-5 for colours <= 1.
-// Extreme inputs give finite spreads within the colours.
+// E[c^2] - E[c]^2 bounds the agreement of the variances, not of their roots: 2e-5 for colours <= 1
+// (measured 1.7e-5 with exact knots). The shader's coarse knots (docs/colormap_filtering.md, "Coarse
+// knots") move each segment's weight by at most 6e-7, so E[c] by 6e-7 TV(c) and E[c^2] by 6e-7 TV(c^2)
+// <= 1.2e-6 TV(c) (colours in [0, 1]); the variance by at most 4 * 6e-7 TV(c), TV the map's total
+// variation in its most varying channel. Extreme inputs give finite spreads within the colours.
 TEST(ColormapTableGpu, ColourSpreadMatchesQuadrature) {
   auto context = test::make_validated_context();
   const Scene scene = two_map_scene();
@@ -233,6 +236,11 @@ TEST(ColormapTableGpu, ColourSpreadMatchesQuadrature) {
     for (float mu : {-1e30f, 0.5f, 1e30f})
       for (float sigma : {0.0f, 1e-30f, 10.0f, 1e30f}) probes.emplace_back(mu, sigma, m, 1);
   const std::vector<vec4> spread = GaussianProbe(*context, scene, false).run(probes, 3);
+  const auto total_variation = [](const Colormap& map) {
+    glm::dvec3 variation(0.0);
+    for (size_t k = 0; k + 1 < map.colours().size(); ++k) variation += glm::abs(map.colours()[k + 1] - map.colours()[k]);
+    return std::max({variation.x, variation.y, variation.z});
+  };
   double worst = 0;
   for (size_t i = 0; i < regular; ++i) {
     const auto& material = std::get<ColormapTextureMaterial>(scene.materials.at(static_cast<size_t>(probes[i].z)));
@@ -240,7 +248,8 @@ TEST(ColormapTableGpu, ColourSpreadMatchesQuadrature) {
     const glm::dvec3 gpu = glm::dvec3(spread[i]);
     const double error = max_channel(gpu * gpu - variance);
     worst = std::max(worst, error);
-    ASSERT_LE(error, 2e-5) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
+    const double bound = 2e-5 + 4 * 6e-7 * total_variation(material.colormap);
+    ASSERT_LE(error, bound) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
   }
   for (size_t i = regular; i < probes.size(); ++i)
     for (int c = 0; c < 3; ++c)
