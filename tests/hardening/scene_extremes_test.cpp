@@ -82,8 +82,9 @@ bool names_a_key_on(Json::json_pointer at, const std::string& message) {
   return false;
 }
 
-// The scene with its generated textures shrunk to at most 64 x 64, if it still loads that way: each
-// variant regenerates them, and the extremes do not depend on their size.
+// The scene with its generated textures shrunk, if it still loads that way: each variant regenerates
+// them, and the extremes do not depend on their size. Noise to 16 x 16; Gaussian height fields to
+// 64 x 64 (smaller periods refuse the shipped correlation lengths).
 Json lighter(const Json& document, const fs::path& source) {
   Json light = document;
   std::vector<Json*> pending = {&light};
@@ -92,9 +93,12 @@ Json lighter(const Json& document, const fs::path& source) {
     pending.pop_back();
     if (value->is_object())
       for (auto& [key, child] : value->items()) {
-        if ((key == "noise" || key == "gaussian") && child.is_object())
+        if ((key == "noise" || key == "gaussian") && child.is_object()) {
+          const double side_limit = key == "noise" ? 16 : 64;
           for (const char* side : {"width", "height"})
-            if (child.contains(side) && child[side].is_number() && child[side].get<double>() > 64) child[side] = 64;
+            if (child.contains(side) && child[side].is_number() && child[side].get<double>() > side_limit)
+              child[side] = side_limit;
+        }
         pending.push_back(&child);
       }
     if (value->is_array())
