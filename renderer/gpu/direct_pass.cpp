@@ -118,23 +118,29 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       adaptive_budget_(method.adaptive),
       writes_aovs_(writes_aovs(method)),
       counts_work_(method.counts_work),
+      diffraction_(
+          timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
+      // The specialization needs the diffraction tables' layout, nothing of the textures. The thread
+      // ends before the constructor does (kernel_ waits for it; so does the future if the upload throws).
+      compiling_(std::async(std::launch::async,
+                            [&context, &scene, &method, spec = specialization(scene, method, diffraction_)] {
+                              const std::vector<uint32_t> program = direct_pass_program(scene, method);
+                              return std::make_unique<vk::Kernel>(
+                                  context, vk::KernelDesc{.name = "render_direct",
+                                                          .spirv = program,
+                                                          .buffer_count = FACET_RENDER_BINDING_COUNT,
+                                                          .push_constant_bytes = sizeof(GpuTile),
+                                                          .specialization = spec,
+                                                          .buffer_kinds = binding_kinds()});
+                            })),
       buffers_(
           timed(timings, "upload",
                 [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
-      diffraction_(
-          timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
       pixels_(context, sizeof(vec4) * pixel_vec4s(writes_aovs_) * static_cast<uint64_t>(tile_size) * tile_size),
       pixel_list_(
           vk::Buffer::of<glm::uvec2>(context, method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)),
-      kernel_(timed(timings, "pipeline", [&] {
-        const std::vector<uint32_t> program = direct_pass_program(scene, method);
-        return vk::Kernel(context, {.name = "render_direct",
-                                    .spirv = program,
-                                    .buffer_count = FACET_RENDER_BINDING_COUNT,
-                                    .push_constant_bytes = sizeof(GpuTile),
-                                    .specialization = specialization(scene, method, diffraction_),
-                                    .buffer_kinds = binding_kinds()});
-      })) {
+      // The part of the pipeline's creation the upload did not hide.
+      kernel_(timed(timings, "pipeline", [&] { return compiling_.get(); })) {
   check_height_field_tracing(scene, method);
   // lavapipe JIT-compiles a pipeline on its first dispatch: one pixel here keeps that out of every
   // frame's device time (and gives it a phase of its own).
@@ -152,7 +158,7 @@ double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, in
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const int k = samples_per_axis_;
   const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread, uvec4(0)};
-  return kernel_.dispatch(bindings, &tile, groups);
+  return kernel_->dispatch(bindings, &tile, groups);
 }
 
 double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum) {
@@ -164,7 +170,7 @@ double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, st
   // The refined pixels' estimate is only written out: without an `error` channel it is left out.
   const GpuTile tile{uvec4(0, 0, n, 1), uvec4(stratum % k, stratum / k, stratum, k), spread,
                      uvec4(n, aovs_.error ? 0 : 1, 0, 0)};
-  return kernel_.dispatch(bindings, &tile, glm::uvec3(blocks, 1, 1));
+  return kernel_->dispatch(bindings, &tile, glm::uvec3(blocks, 1, 1));
 }
 
 void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,

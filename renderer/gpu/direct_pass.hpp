@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <functional>
+#include <future>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -73,11 +75,14 @@ class DirectPass {
   AdaptiveBudget adaptive_budget_;
   bool writes_aovs_;      // the pass accumulates the auxiliary values (asked for, or filtered:adaptive's estimate)
   bool counts_work_;      // the pixels hold their samples' summed work, not colours (gpu/work_per_pixel.hpp)
-  SceneBuffers buffers_;
   DiffractionBuffers diffraction_;
+  // The pipeline, compiled on a thread of its own while the textures upload (lavapipe's pipeline
+  // creation is CPU work of its own, the upload mostly waits on small dispatches).
+  std::future<std::unique_ptr<vk::Kernel>> compiling_;
+  SceneBuffers buffers_;
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range
   vk::Buffer pixel_list_;  // filtered:adaptive: up to a tile's worth of frame positions to refine
-  vk::Kernel kernel_;
+  std::unique_ptr<vk::Kernel> kernel_;
 };
 
 // One frame from the scene's own camera: DirectPass(context, scene, method, tile_size).render(...).

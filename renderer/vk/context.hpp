@@ -7,6 +7,7 @@
 // handler, which by default prints it on stderr, and is counted.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -73,7 +74,7 @@ class Context {
                                                               const VkDebugUtilsMessengerCallbackDataEXT*, void*);
 
   bool validation_ = false;
-  uint32_t validation_messages_ = 0;
+  std::atomic<uint32_t> validation_messages_ = 0;  // the layer may call back from any thread
   std::function<void(const std::string&)> validation_handler_;
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;

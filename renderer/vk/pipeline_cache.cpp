@@ -10,11 +10,26 @@ CompiledKernel::~CompiledKernel() {
 
 std::shared_ptr<const CompiledKernel> PipelineCache::get(
     PipelineKey key, const std::function<std::shared_ptr<const CompiledKernel>()>& compile) {
-  auto found = entries_.find(key);
-  if (found != entries_.end()) return found->second;
+  {
+    std::lock_guard lock(mutex_);
+    auto found = entries_.find(key);
+    if (found != entries_.end()) return found->second;
+  }
+  // Compiled unlocked, so another thread's kernels (the texture upload's MIP builder beside the direct
+  // pass's compilation) do not wait for it; if two threads compile one key, the first entry stays.
   auto compiled = compile();
-  entries_.emplace(std::move(key), compiled);
-  return compiled;
+  std::lock_guard lock(mutex_);
+  return entries_.emplace(std::move(key), std::move(compiled)).first->second;
+}
+
+std::size_t PipelineCache::size() const {
+  std::lock_guard lock(mutex_);
+  return entries_.size();
+}
+
+void PipelineCache::clear() {
+  std::lock_guard lock(mutex_);
+  entries_.clear();
 }
 
 }  // namespace facet::vk

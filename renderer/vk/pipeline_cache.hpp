@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -44,10 +45,11 @@ class PipelineCache {
   // The pipeline for `key`, made by `compile` the first time it is asked for (a throw caches nothing).
   std::shared_ptr<const CompiledKernel> get(PipelineKey key,
                                             const std::function<std::shared_ptr<const CompiledKernel>()>& compile);
-  std::size_t size() const { return entries_.size(); }
-  void clear() { entries_.clear(); }
+  std::size_t size() const;
+  void clear();
 
  private:
+  mutable std::mutex mutex_;  // get() may run on two threads (gpu::DirectPass compiles beside its upload)
   std::map<PipelineKey, std::shared_ptr<const CompiledKernel>> entries_;
 };
 
