@@ -150,7 +150,7 @@ std::unique_ptr<frames::PreparedFrames> prepare_group(const LoadedScene& scene, 
           *scene.scene, frames::ReferenceMethod{job.grid, job.seed, 0, aovs}, nullptr);
     }
     gpu::RenderMethod parsed = gpu::RenderMethod::parse(method);  // before the device: a typo needs no Vulkan
-    aovs.error = aovs.error && parsed.texture == gpu::RenderMethod::Texture::Filtered;
+    aovs.error = aovs.error && parsed.estimates_error();
     parsed.aovs = aovs;
     return std::make_unique<frames::PreparedFrames>(*scene.scene, parsed, &device.context());
   } catch (const std::exception& e) {

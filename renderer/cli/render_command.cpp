@@ -49,7 +49,7 @@ gpu::RenderMethod render_method(const RenderOptions& options) {
   method.diffraction.wavelengths = options.wavelengths;
   method.diffraction.taylor = options.taylor;
   method.aovs = parse_aovs(options.aov);
-  if (method.aovs.error && method.texture != gpu::RenderMethod::Texture::Filtered)
+  if (method.aovs.error && !method.estimates_error())
     throw Error("--aov error: only --method filtered (or filtered:ss:K) estimates its error, not " + method.name());
   if ((options.adaptive.error || options.adaptive.time_ms) && method.adaptive_samples_per_axis == 0)
     throw Error("--adaptive-error and --adaptive-time budget --method filtered:adaptive, not " + method.name());

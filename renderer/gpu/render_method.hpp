@@ -45,6 +45,9 @@ struct RenderMethod {
   // Throws facet::Error naming the known methods for anything else.
   static RenderMethod parse(const std::string& text);
   std::string name() const;  // the canonical text, as parse() reads it
+  // Whether the pass can write its per-pixel error estimate (`--aov error`, docs/error_estimate.md):
+  // the filtered family (filtered, filtered:ss:K, filtered:adaptive).
+  bool estimates_error() const { return texture == Texture::Filtered; }
 };
 
 }  // namespace facet::gpu

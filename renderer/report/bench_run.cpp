@@ -66,7 +66,7 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
 std::optional<ErrorEstimateQuality> judge_estimate(vk::Context& context, const Scene& scene,
                                                    const CatalogueEntry& method, const Image& reference) {
   gpu::RenderMethod estimating = method.render_method();
-  if (estimating.texture != gpu::RenderMethod::Texture::Filtered) return std::nullopt;
+  if (!estimating.estimates_error()) return std::nullopt;
   estimating.aovs.error = true;
   frames::PreparedFrames prepared(scene, estimating, &context);
   const Image image = prepared.render(scene.camera, reference.width, reference.height).image;
