@@ -99,6 +99,7 @@ AovPixel aov_pixel(vec4 depth_normal, vec4 uv_error, float hits, int k) {
   if (hits > 0.0f && glm::dot(normal, normal) > 0.0f) p.normal = glm::normalize(normal);
   if (hits > 0.0f) p.uv = glm::vec2(uv_error.x, uv_error.y) / hits;
   p.error = uv_error.z / static_cast<float>(k * k);
+  p.texture_term = uv_error.w > 0.0f;
   return p;
 }
 

@@ -70,7 +70,8 @@ const bool kTracesHeightFields = false;
 #endif
 
 // This invocation's auxiliary outputs (kWritesAovs), set by radiance() and shade(): camera-space z and
-// the shading normal (0 on a miss); uv and the texture's error estimate (docs/error_estimate.md).
+// the shading normal (0 on a miss); uv, the texture's error estimate (docs/error_estimate.md) and 1 where
+// a texture term models the hit.
 vec4 aov_depth_normal = vec4(0.0);
 vec4 aov_uv_error = vec4(0.0);
 // This invocation's work so far (kCountsWork): renderer/gpu/work_counter.hpp finds them by name.
@@ -143,6 +144,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
     if (kWritesAovs) {  // the albedo's spread as radiance, scaled by the filter-mismatch factor (eq. 1)
       vec3 e = lambert_radiance(spread, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
       aov_uv_error.z = kErrorMismatch * (e.r + e.g + e.b) / 3.0;
+      aov_uv_error.w = 1.0;  // the texture term models this hit (eq. 3' leaves it alone)
     }
   }
 #endif
