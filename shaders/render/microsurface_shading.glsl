@@ -48,9 +48,12 @@ MicrosurfaceStatistics microsurface_point_statistics(vec3 p) {
 MicrosurfaceMoments microsurface_tap_moments(GpuMaterial m, vec2 q, vec2 size, float lod, float point_weight) {
   uint first = m.texture.x + 1u, count = m.texture.y;
   vec2 uv = q / size;
-  // mip and colormip use the means only: the second-moment chain is read by filtered alone.
-  MicrosurfaceMoments chain = MicrosurfaceMoments(
-      sample_trilinear(first, count, uv, lod), kTextureMethod >= 3u ? sample_trilinear(first + count, count, uv, lod) : vec4(0.0));
+  // mip and colormip use the means only: the second-moment chain is read by filtered alone, which only
+  // the program that traces height fields runs on microsurfaces.
+  MicrosurfaceMoments chain = MicrosurfaceMoments(sample_trilinear(first, count, uv, lod), vec4(0.0));
+#ifdef FACET_HEIGHT_FIELDS
+  if (kTextureMethod >= 3u) chain.m1 = sample_trilinear(first + count, count, uv, lod);
+#endif
   if (point_weight <= 0.0) return chain;
   MicrosurfaceMoments point = microsurface_point_moments(heightfield_point(heightfield_quads(m), q, m.albedo.w));
   return MicrosurfaceMoments(mix(chain.m0, point.m0, point_weight), mix(chain.m1, point.m1, point_weight));
@@ -220,6 +223,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
     MicrosurfaceMoments tm = microsurface_tap_moments(m, tap, size, f.lod, point_weight);
     sum.m0 += tm.m0;
     sum.m1 += tm.m1;
+#ifndef FACET_HEIGHT_FIELDS  // colormip shades the flat rectangle only
     if (kTextureMethod == 2u) {
       vec3 chain = sample_trilinear(m.texture.x + 1u + 2u * m.texture.y, m.texture.y, tap / size, f.lod).rgb;
       if (point_weight > 0.0) {
@@ -228,6 +232,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
       }
       albedo += chain;
     }
+#endif
   }
   MicrosurfaceStatistics stats = microsurface_statistics(sum.m0 / f.taps, sum.m1 / f.taps);
   // The program that traces height fields shades footprints for filtered alone; the other, for mip and
