@@ -113,14 +113,19 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
     heights_lit = vec3(0.0);
     float a = microsurface_lit_exponent(vis);
     bool lit_on_visible_nodes = a <= MS_LIT_SHARED_MAX;
-    for (int k = 0; k < MS_HEIGHT_NODES; ++k) {
-      vec3 c = microsurface_height_colour(m, microsurface_height_node(k, stats.h_mean, stats.h_sigma, vis.lambda_v));
-      heights += c;
-      heights_lit += lit_on_visible_nodes ? microsurface_lit_weight(k, a) * c
-                            : microsurface_height_colour(m, microsurface_height_node(
-                                                                k, stats.h_mean, stats.h_sigma, vis.lambda_v + vis.lambda_l)) /
-                                  float(MS_HEIGHT_NODES);
-    }
+    // Node k of the visible heights, then, where the lit weights are not shared, of the visible and lit
+    // ones: one call of the node and its colour (each call site is compiled on its own).
+    for (int k = 0; k < MS_HEIGHT_NODES; ++k)
+      for (int lit_nodes = 0; lit_nodes < (lit_on_visible_nodes ? 1 : 2); ++lit_nodes) {
+        float lambda = lit_nodes == 0 ? vis.lambda_v : vis.lambda_v + vis.lambda_l;
+        vec3 c = microsurface_height_colour(m, microsurface_height_node(k, stats.h_mean, stats.h_sigma, lambda));
+        if (lit_nodes == 1)
+          heights_lit += c / float(MS_HEIGHT_NODES);
+        else {
+          heights += c;
+          if (lit_on_visible_nodes) heights_lit += microsurface_lit_weight(k, a) * c;
+        }
+      }
     heights /= float(MS_HEIGHT_NODES);
     heights_lit *= vis.lit;
   }
