@@ -50,11 +50,18 @@ vec4 bilinear(TexelQuad q) { return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t
 // Bilinear between texel centres, periodic (at level 0 as renderer/cpu/material_shading.cpp).
 vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(texture_level(level), uv)); }
 
+// Both levels through one call of sample_level: lavapipe compiles each call site of an inlined
+// function on its own, and trilinear lookups are made at many sites.
 vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod) {
   float l0 = floor(lod);
   uint level = first + uint(l0);
-  if (l0 + 1.0 >= float(count)) return sample_level(level, uv);
-  return mix(sample_level(level, uv), sample_level(level + 1u, uv), lod - l0);
+  bool blends = l0 + 1.0 < float(count);
+  vec4 fine = vec4(0.0), coarse = vec4(0.0);
+  for (uint i = 0u; i < (blends ? 2u : 1u); ++i) {
+    vec4 s = sample_level(level + i, uv);
+    if (i == 0u) fine = s; else coarse = s;
+  }
+  return blends ? mix(fine, coarse, lod - l0) : fine;
 }
 
 float colormap_position(GpuColormap map, float value) {
