@@ -49,6 +49,8 @@ layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICES) const uint kPreinte
 layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS) const uint kPreintegratedSliceWords = 0xffffffffu;
 layout(constant_id = FACET_RENDER_SPEC_AOVS) const bool kWritesAovs = false;
 layout(constant_id = FACET_RENDER_SPEC_COUNTS_WORK) const bool kCountsWork = false;
+layout(constant_id = FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS) const bool kHasLinearColormaps = true;
+layout(constant_id = FACET_RENDER_SPEC_HAS_STEP_COLORMAPS) const bool kHasStepColormaps = true;
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS
