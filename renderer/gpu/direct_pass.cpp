@@ -32,10 +32,14 @@ std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod
   return method.counts_work ? instrument_work_counts(program) : std::vector<uint32_t>(program.begin(), program.end());
 }
 
-// The scene, once its height fields are known to be traceable: refuses, in one line, fields whose traversal
-// could pass the shader's loop bound (render/heightfield_trace.glsl; lavapipe would cut the loop short
-// without a word). Checked before the pass uploads or compiles anything.
-const Scene& traceable(const Scene& scene, const RenderMethod& method) {
+// The scene, once the pass is known to run it on this device, checked before it uploads or compiles
+// anything: the program's colour maps walk their points across a subgroup (render/texture_sampling.glsl),
+// and no height field's traversal may pass the shader's loop bound (render/heightfield_trace.glsl;
+// lavapipe would cut the loop short without a word). Each refusal is one line.
+const Scene& runnable(const vk::Context& context, const Scene& scene, const RenderMethod& method) {
+  vk::require_compute_subgroup_operations(
+      context.info(), VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT,
+      "the render pass");
   if (!traces_height_fields(scene, method)) return scene;
   std::int64_t nodes = 0;
   for (const Plane& plane : scene.planes) {
@@ -121,7 +125,7 @@ int tile_count(int width, int height, int tile_size) {
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
                        PhaseTimings* timings)
-    : scene_(&traceable(scene, method)),
+    : scene_(&runnable(context, scene, method)),
       tile_size_(tile_size > 0 && tile_size <= kMaxTileSize
                      ? tile_size
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
