@@ -249,25 +249,29 @@ vec2 footprint_moments(MomentLevels levels, vec2 uv, vec2 axis_a, vec2 axis_b) {
   return mix(a, vec2(b.x, b.y + b.z), levels.blend);
 }
 
-// The spread of the mapped colour under t ~ N(mu, sigma^2): sqrt(E[colormap(t)^2] - mean^2) per channel
-// (docs/error_estimate.md, eq. 2), `mean` the pass's exact E[colormap(t)]. On a segment the colour is
-// p + q z in the standard variable z = (t - mu)/sigma, and over [a, b]
+// The spread of the mapped colour under t ~ N(mu, sigma^2): sqrt(E[(colormap(t) - mean)^2]) per channel
+// (docs/error_estimate.md, eq. 2), `mean` the pass's E[colormap(t)]. On a segment the colour less the mean
+// is p + q z in the standard variable z = (t - mu)/sigma, and over [a, b]
 //   integral (p + q z)^2 phi(z) dz = p^2 dPhi + 2 p q (phi(a) - phi(b)) + q^2 (dPhi + a phi(a) - b phi(b)),
-// the end tails adding c_first^2 Phi(z_first) and c_last^2 Phi(-z_last).
+// the end tails adding (c_first - mean)^2 Phi(z_first) and (c_last - mean)^2 Phi(-z_last). Centred on the
+// mean, a footprint within one step of the map reads (c - mean)^2 ~ 1e-14, not the float cancellation
+// of E[c^2] - mean^2 (~1e-7 of c^2, a spread of ~3e-4).
 vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
   float m = colormap_position(map, mu), s = max(sigma / abs(map.domain.y - map.domain.x), 1e-30);
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
   vec4 a = colormap_point(first);
+  a.rgb -= mean;
   float za = colormap_standardize(a.w, m, s);
   ColormapKnot ka = colormap_knot_coarse(za);
   vec3 second = a.rgb * a.rgb * ka.Phi;
   for (uint i = first; i < last; ++i) {
     vec4 b = colormap_point(i + 1u);
+    b.rgb -= mean;
     float zb = colormap_standardize(b.w, m, s);
     ColormapKnot kb = colormap_knot_coarse(zb);
     bool linear = map.info.z != 1u && zb > za;
     vec3 q = linear ? (b.rgb - a.rgb) / (zb - za) : vec3(0.0);
-    vec3 p = a.rgb - q * za;  // the colour at z = 0 (t = mu)
+    vec3 p = a.rgb - q * za;  // the colour less the mean at z = 0 (t = mu)
     float dPhi = max(kb.Phi - ka.Phi, 0.0), pdf_a = sf_normal_pdf(za), pdf_b = sf_normal_pdf(zb);
     second += p * p * dPhi + 2.0 * p * q * (pdf_a - pdf_b) + q * q * (dPhi + za * pdf_a - zb * pdf_b);
     a = b;
@@ -275,7 +279,7 @@ vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
     ka = kb;
   }
   second += a.rgb * a.rgb * ka.Phi_reflected;
-  return sqrt(max(second - mean * mean, vec3(0.0)));
+  return sqrt(max(second, vec3(0.0)));
 }
 
 // Sub-footprints per pixel axis for `filtered`: the law of the texture values over the pixel is the
