@@ -1,6 +1,7 @@
 // facet render SCENE -o OUT.exr: renders a scene on the Vulkan device to EXR (+ PNG preview).
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -81,15 +82,19 @@ void print_timings(const PhaseTimings& phases, double gpu_ms) {
 int run_render(const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   PhaseTimings phases;
+  // The device is created while the scene loads: neither needs the other, and each takes tens of ms.
+  std::future<std::unique_ptr<vk::Context>> creating = std::async(std::launch::async, [&options] {
+    return std::make_unique<vk::Context>(vk::ContextOptions{options.device.device, options.device.validation});
+  });
   Scene scene = timed(&phases, "load", [&] { return load_scene(options.scene, options.overrides); });
   options.frame.apply(scene);
   const auto [width, height] = options.resolution.resolve(scene.camera);
   const gpu::RenderMethod method = render_method(options);
   for (const std::string& warning : idle_option_warnings(scene, method, given_diffraction_options(options)))
     std::cerr << warning << "\n";
-  vk::Context context = timed(&phases, "device", [&] {
-    return vk::Context({options.device.device, options.device.validation});
-  });
+  // The part of the device's creation the load did not hide.
+  const std::unique_ptr<vk::Context> device = timed(&phases, "device", [&] { return creating.get(); });
+  vk::Context& context = *device;
   frames::PreparedFrames prepared(scene, method, &context);
   phases.add(prepared.preparation());
   ProgressBar progress("render", gpu::tile_count(width, height));

@@ -32,10 +32,11 @@ std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod
   return method.counts_work ? instrument_work_counts(program) : std::vector<uint32_t>(program.begin(), program.end());
 }
 
-// Refuses, in one line, height fields whose traversal could pass the shader's loop bound
-// (render/heightfield_trace.glsl; lavapipe would cut the loop short without a word).
-void check_height_field_tracing(const Scene& scene, const RenderMethod& method) {
-  if (!traces_height_fields(scene, method)) return;
+// The scene, once its height fields are known to be traceable: refuses, in one line, fields whose traversal
+// could pass the shader's loop bound (render/heightfield_trace.glsl; lavapipe would cut the loop short
+// without a word). Checked before the pass uploads or compiles anything.
+const Scene& traceable(const Scene& scene, const RenderMethod& method) {
+  if (!traces_height_fields(scene, method)) return scene;
   std::int64_t nodes = 0;
   for (const Plane& plane : scene.planes) {
     const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
@@ -47,6 +48,7 @@ void check_height_field_tracing(const Scene& scene, const RenderMethod& method) 
                 std::to_string(nodes) + " MIP nodes, more than its loop bound of " +
                 std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) +
                 " (use coarser texels, a smaller rectangle or --method mip)");
+  return scene;
 }
 
 // Whether the pass accumulates the auxiliary values: asked for, or filtered:adaptive's error estimate.
@@ -108,12 +110,13 @@ int tile_count(int width, int height, int tile_size) {
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
                        PhaseTimings* timings)
-    : DirectPass(context, scene, method, tile_size, timings,
-                 timed(timings, "diffraction", [&] { return plan_diffraction(context, scene, method.diffraction); })) {}
+    : DirectPass(context, scene, method, tile_size, timings, timed(timings, "diffraction", [&] {
+                   return plan_diffraction(context, traceable(scene, method), method.diffraction);
+                 })) {}
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
                        PhaseTimings* timings, DiffractionPlan diffraction)
-    : scene_(&scene),
+    : scene_(&scene),  // traceable (checked before the plan)
       tile_size_(tile_size > 0 && tile_size <= kMaxTileSize
                      ? tile_size
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
@@ -148,7 +151,6 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
           vk::Buffer::of<glm::uvec2>(context, method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)),
       // The part of the pipeline's creation the upload did not hide.
       kernel_(timed(timings, "pipeline", [&] { return compiling_.get(); })) {
-  check_height_field_tracing(scene, method);
   // lavapipe JIT-compiles a pipeline on its first dispatch: one pixel here keeps that out of every
   // frame's device time (and gives it a phase of its own).
   timed(timings, "jit", [&] {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <csetjmp>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <stdexcept>
@@ -14,7 +15,7 @@
 
 #include "image/atomic_file.hpp"
 #include "image/io_error.hpp"
-#include "image/srgb.hpp"
+#include "image/srgb8_table.hpp"
 
 namespace facet {
 namespace {
@@ -123,16 +124,47 @@ void write_png_rgb8(const std::filesystem::path& path, int width, int height, st
 
 Rgb8Image preview_rgb8(const Image& image, double exposure_stops) {
   const double scale = std::exp2(exposure_stops);
+  const Srgb8Table& srgb8 = srgb8_table();
   std::vector<std::uint8_t> encoded(image.rgb.size());
-  for (std::size_t i = 0; i < encoded.size(); ++i) encoded[i] = srgb_display8(scale * image.rgb[i]);
+  for (std::size_t i = 0; i < encoded.size(); ++i) encoded[i] = srgb8(scale * image.rgb[i]);
   return Rgb8Image(image.width, image.height, std::move(encoded));
 }
 
-void write_png_preview(const std::filesystem::path& path, const Image& image, double exposure_stops) {
+std::vector<std::uint8_t> encode_png_preview(const Image& image, double exposure_stops) {
   if (image.rgb.size() != 3 * image.pixel_count())
-    throw io_error(path, "image has " + std::to_string(image.rgb.size()) + " floats, expected 3 per pixel");
+    throw std::runtime_error("image has " + std::to_string(image.rgb.size()) + " floats, expected 3 per pixel");
   const Rgb8Image preview = preview_rgb8(image, exposure_stops);
-  write_png_rgb8(path, preview.width, preview.height, preview.bytes);
+  char* data = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = open_memstream(&data, &size);
+  if (memory == nullptr) throw std::runtime_error(std::string("cannot open a memory stream: ") + std::strerror(errno));
+  try {
+    write_rgb8(memory, preview.width, preview.height, preview.bytes);
+  } catch (...) {
+    std::fclose(memory);
+    std::free(data);
+    throw;
+  }
+  std::fclose(memory);  // sets data and size to the final buffer
+  std::vector<std::uint8_t> bytes(data, data + size);
+  std::free(data);
+  return bytes;
+}
+
+void write_png_file(const std::filesystem::path& path, std::span<const std::uint8_t> png) {
+  write_file_atomically(path, [&](std::FILE* file) {
+    if (std::fwrite(png.data(), 1, png.size(), file) != png.size()) throw std::runtime_error("short write");
+  });
+}
+
+void write_png_preview(const std::filesystem::path& path, const Image& image, double exposure_stops) {
+  std::vector<std::uint8_t> png;
+  try {
+    png = encode_png_preview(image, exposure_stops);
+  } catch (const std::exception& e) {
+    throw io_error(path, e.what());
+  }
+  write_png_file(path, png);
 }
 
 PngImage read_png(const std::filesystem::path& path) {

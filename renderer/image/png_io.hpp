@@ -18,6 +18,11 @@ Rgb8Image preview_rgb8(const Image& image, double exposure_stops = 0.0);
 // preview_rgb8 written atomically like write_exr.
 void write_png_preview(const std::filesystem::path& path, const Image& image, double exposure_stops = 0.0);
 
+// The bytes of that PNG file, encoded in memory (so a frame's preview can be encoded while its EXR is
+// written, and stored only once the EXR is), and their atomic write.
+std::vector<std::uint8_t> encode_png_preview(const Image& image, double exposure_stops = 0.0);
+void write_png_file(const std::filesystem::path& path, std::span<const std::uint8_t> png);
+
 // Already-encoded 8-bit RGB (3 bytes per pixel, top row first), e.g. a false-colour error map.
 void write_png_rgb8(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgb);
 

@@ -252,7 +252,6 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   float lod = f.lod >= coarsest ? f.lod : max(f.lod - log2(split), 0.0);
   vec2 tap_major = f.major * size / along, tap_minor = f.minor * size / split;  // one tap's axes, in texels
   vec3 colour = vec3(0.0);
-  vec2 moments = vec2(0.0);
   MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
   for (float k = 0.0; k < along; k += 1.0) {
     for (float j = 0.0; j < split; j += 1.0) {
@@ -267,7 +266,6 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
         float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
         vec3 mean = colormap_gaussian(map, t.x, sigma);
         colour += mean;
-        moments += t;
         if (estimates) spread += colormap_spread(map, t.x, sigma, mean);
 #endif
       }
@@ -275,18 +273,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   }
   float count = along * split;
   vec3 albedo = colour / count;
-  if (estimates) {
-    // eq. 4: from 1 down to 1/4 as the footprint gathers the texture's whole variance (its coarsest
-    // moment level): its value distribution then tends to the texture's histogram, whose mean and
-    // variance the model has.
-    moments /= count;
-    float variance = max(moments.y - moments.x * moments.x, 0.0);
-    vec4 top = sample_level(m.texture.x + m.texture.y - 1u, uv);
-    float total = top.y + top.z - top.x * top.x;
-    float gathered = total > 0.0 ? min(variance / total, 1.0) : 1.0;
-    float structured = sqrt(1.0 - 0.9375 * gathered);
-    spread *= structured / count;
-  }
+  if (estimates) spread /= count;
   return albedo;
 }
 
