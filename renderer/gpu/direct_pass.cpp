@@ -141,8 +141,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                                                           .buffer_kinds = binding_kinds()});
                             })),
       // The tables' words (the table cache's file, or their build), read while the pipeline compiles.
-      diffraction_(
-          timed(timings, "diffraction", [&] { return upload_diffraction(context, std::move(diffraction)); })),
+      diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, std::move(diffraction)); })),
       buffers_(
           timed(timings, "upload",
                 [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),

@@ -20,6 +20,8 @@ struct PreintegratedSource {
 };
 
 // Coefficient p at corner (du, dv) of cell c, scaled: the words of the cell whose first word is `cell`.
+// Few call sites: NIR inlines each (four corners per term), and lavapipe's pipeline set-up grows with
+// them (docs/diffraction_fast_paths.md, "Warm wall clock").
 vec3 diffraction_preintegrated_corner(PreintegratedSource s, PreintegratedCell c, uint cell, int du, int dv, int p,
                                       float scale) {
   uint k = s.first_word + uint(preintegrated_word_index(s.grid, c, du, dv, p));
