@@ -4,6 +4,8 @@
 // 8 wavelengths keep the tables quick to build.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
