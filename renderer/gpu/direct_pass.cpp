@@ -54,6 +54,14 @@ const Scene& traceable(const Scene& scene, const RenderMethod& method) {
 // Whether the pass accumulates the auxiliary values: asked for, or filtered:adaptive's error estimate.
 bool writes_aovs(const RenderMethod& method) { return method.aovs.any() || method.adaptive_samples_per_axis > 0; }
 
+// Whether a colour-mapped texture of the scene has a map of this interpolation.
+bool uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
+  for (const Material& m : scene.materials)
+    if (const auto* t = std::get_if<ColormapTextureMaterial>(&m); t && t->colormap.interpolation() == interpolation)
+      return true;
+  return false;
+}
+
 // The specialization constants of the pass by their names in the shaders: what the scene uses, how
 // the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
@@ -73,6 +81,8 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS, diffraction.preintegrated_slices.slice_words},
       {FACET_RENDER_SPEC_AOVS, writes_aovs(method) ? 1u : 0u},
       {FACET_RENDER_SPEC_COUNTS_WORK, method.counts_work ? 1u : 0u},
+      {FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Linear) ? 1u : 0u},
+      {FACET_RENDER_SPEC_HAS_STEP_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Steps) ? 1u : 0u},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};
@@ -99,6 +109,7 @@ AovPixel aov_pixel(vec4 depth_normal, vec4 uv_error, float hits, int k) {
   if (hits > 0.0f && glm::dot(normal, normal) > 0.0f) p.normal = glm::normalize(normal);
   if (hits > 0.0f) p.uv = glm::vec2(uv_error.x, uv_error.y) / hits;
   p.error = uv_error.z / static_cast<float>(k * k);
+  p.texture_term = uv_error.w > 0.0f;
   return p;
 }
 

@@ -37,6 +37,7 @@ struct AovPixel {
   glm::vec3 normal{0.0f};
   glm::vec2 uv{0.0f};
   float error = 0.0f;
+  bool texture_term = false;  // some stratum's hit has a texture term in `error` (docs/error_estimate.md)
 };
 
 // Appends the channels of `aovs` to image.channels, zero-filled; returns the index of the first.

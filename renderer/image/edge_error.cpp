@@ -30,11 +30,15 @@ std::vector<float> edge_error(const Image& image, const std::vector<AovPixel>& p
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const std::size_t p = image.index(x, y);
+      // eq. 3': a covered pixel that no texture term models (a traced microsurface, an untextured
+      // surface) takes the contrast with every covered neighbour, as if edges lay between them: its one
+      // ray stands for detail it cannot see, and where that detail varies, so do neighbouring pixels.
+      const bool unestimated = image.alpha[p] > 0.0f && !pixels[p].texture_term;
       const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
       for (const auto& [nx, ny] : neighbours) {
         if (nx < 0 || ny < 0 || nx >= image.width || ny >= image.height) continue;
         const std::size_t q = image.index(nx, ny);
-        if (across_edge(image, pixels, p, q))
+        if (across_edge(image, pixels, p, q) || (unestimated && image.alpha[q] > 0.0f))
           edge[p] = std::max(edge[p], scale * mean_abs_difference(image.at(p), image.at(q)));
       }
     }

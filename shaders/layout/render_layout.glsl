@@ -51,7 +51,9 @@
 #define FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS 9
 #define FACET_RENDER_SPEC_AOVS 10
 #define FACET_RENDER_SPEC_COUNTS_WORK 11
-#define FACET_RENDER_SPEC_COUNT 12
+#define FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS 12
+#define FACET_RENDER_SPEC_HAS_STEP_COLORMAPS 13
+#define FACET_RENDER_SPEC_COUNT 14
 
 // The code a variant of the program compiles in: its FACET_VARIANT_CODE is a sum of these
 // (render/direct_pass.glsl; shaders/CMakeLists.txt lists the variants, renderer/gpu/direct_pass_variant.hpp

@@ -15,8 +15,11 @@ inline real beckmann_facet_specular(real3 n, real3 tangent, real3 v, real3 l, re
   real3 wo = real3(dot(v, t), dot(v, b), dot(v, n));
   if (!(wi.z > real(0) && wo.z > real(0))) return real(0);
   real3 h = normalize(wi + wo);
-  real g2 = real(1) / (real(1) + ndf_beckmann_lambda(wi, alpha) + ndf_beckmann_lambda(wo, alpha));
-  return ndf_beckmann_D(h, alpha) * g2 / (real(4) * wo.z);
+  // G2 = 1/(1 + Lambda_i + Lambda_o), both through one call (a shader compiler that inlines every call
+  // compiles each call site on its own: docs/render_speed.md, "Pipeline set-up").
+  real denominator = real(1);
+  for (int k = 0; k < 2; ++k) denominator += ndf_beckmann_lambda(k == 0 ? wi : wo, alpha);
+  return ndf_beckmann_D(h, alpha) * (real(1) / denominator) / (real(4) * wo.z);
 }
 
 #endif

@@ -37,12 +37,16 @@ inline real gaussian_smith_g1(real2 mean, real3 cov, real theta, real phi) {
 }
 
 // Height-correlated Smith shadowing-masking G2 = 1/(1 + Lambda_i + Lambda_o) (0 if either side faces
-// away from the mean plane).
+// away from the mean plane). Both directions go through one call of each function: a shader compiler
+// that inlines every call compiles each call site on its own (docs/render_speed.md, "Pipeline set-up").
 inline real gaussian_smith_g2(real2 mean, real3 cov, real theta_i, real phi_i, real theta_o, real phi_o) {
-  real t_i = slope_view_frame(mean, cov, theta_i, phi_i).t;
-  real t_o = slope_view_frame(mean, cov, theta_o, phi_o).t;
-  if (t_i <= real(0) || t_o <= real(0)) return real(0);
-  return real(1) / (real(1) + gaussian_smith_lambda_of_t(t_i) + gaussian_smith_lambda_of_t(t_o));
+  real denominator = real(1);
+  for (int k = 0; k < 2; ++k) {
+    real t = slope_view_frame(mean, cov, k == 0 ? theta_i : theta_o, k == 0 ? phi_i : phi_o).t;
+    if (t <= real(0)) return real(0);
+    denominator += gaussian_smith_lambda_of_t(t);
+  }
+  return real(1) / denominator;
 }
 
 // Visible heights for Gaussian heights N(h_mean, h_sigma^2) with CDF C: the CDF is C(h)^(1 + Lambda),

@@ -60,10 +60,15 @@ struct MicrosurfaceVisibility {
 inline MicrosurfaceVisibility microsurface_visibility(MicrosurfaceStatistics s, real3 v, real3 l) {
   real2 view = microsurface_angles(v);
   real2 light = microsurface_angles(l);
-  real lambda_v = gaussian_smith_lambda(s.s_mean, s.s_cov, view.x, view.y);
-  // A light below the horizon of the mean plane lights nothing (Lambda_l = inf: lit = 0).
-  real lambda_l = l.z > real(0) ? gaussian_smith_lambda(s.s_mean, s.s_cov, light.x, light.y)
-                                : exp(GM_LOG_LAMBDA_MAX);
+  // A light below the horizon of the mean plane lights nothing (Lambda_l = inf: lit = 0). Both
+  // Lambdas through one call (a shader compiler that inlines every call compiles each call site on its
+  // own: docs/render_speed.md, "Pipeline set-up").
+  real lambda_v = real(0), lambda_l = exp(GM_LOG_LAMBDA_MAX);
+  for (int k = 0; k < (l.z > real(0) ? 2 : 1); ++k) {
+    real2 w = k == 0 ? view : light;
+    real lambda = gaussian_smith_lambda(s.s_mean, s.s_cov, w.x, w.y);
+    if (k == 0) lambda_v = lambda; else lambda_l = lambda;
+  }
   real lit = (real(1) + lambda_v) / (real(1) + lambda_v + lambda_l);
   return MicrosurfaceVisibility(visible_slope(s.s_mean, s.s_cov, view.x, view.y), lambda_v, lambda_l, lit);
 }

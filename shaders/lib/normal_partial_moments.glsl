@@ -34,10 +34,12 @@ inline NormalPartialMoments normal_partial_moments(real t) {
   if (t >= -NPM_CF_THRESHOLD) {
     // m_1 = m_0 (t + rho), m_2 = t m_1 + m_0, m_3 = t m_2 + 2 m_1 with rho = phi(t)/Phi(t); the
     // forward recurrence cancels only mildly here (var_z to 4e-14 at t = -1.25 in double).
-    real rho = sf_phi_over_Phi(t);
+    // phi/Phi and log Phi share erfcx(|t|/sqrt2) (lib/special_functions.glsl).
+    real e = sf_erfcx_nonneg(abs(t) * SF_INV_SQRT2);
+    real rho = sf_phi_over_Phi_erfcx(t, e);
     real kappa = t + rho;
     real r = real(1) / kappa;
-    return NormalPartialMoments(kappa, t + r, real(1) - r * (r - rho), sf_log_normal_cdf(t) + log(kappa));
+    return NormalPartialMoments(kappa, t + r, real(1) - r * (r - rho), sf_log_normal_cdf_erfcx(t, e) + log(kappa));
   }
   real x = -t;
   int depth = NPM_CF_DEPTH + int(NPM_CF_DEPTH_X / x);

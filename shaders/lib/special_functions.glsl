@@ -162,9 +162,16 @@ inline real sf_normal_pdf(real t) {
   return FACET_INV_SQRT2PI * sf_exp_neg_half_square(t);
 }
 
-inline real sf_normal_tail(real t) {
-  real tail = real(0.5) * sf_erfcx_nonneg(abs(t) * SF_INV_SQRT2) * sf_exp_neg_half_square(t);
+// The functions of t below that end in _erfcx take e = sf_erfcx_nonneg(|t|/sqrt2), which callers
+// evaluating several of them at one t share: a shader compiler that inlines every call compiles each
+// call site on its own (docs/render_speed.md, "Pipeline set-up").
+inline real sf_normal_tail_erfcx(real t, real e) {
+  real tail = real(0.5) * e * sf_exp_neg_half_square(t);
   return t >= real(0) ? tail : real(1) - tail;
+}
+
+inline real sf_normal_tail(real t) {
+  return sf_normal_tail_erfcx(t, sf_erfcx_nonneg(abs(t) * SF_INV_SQRT2));
 }
 
 inline real sf_normal_cdf(real t) {
@@ -189,16 +196,24 @@ inline real sf_normal_tail_coarse(real x, real e) {
 
 // log Phi(t), finite for every finite t: for t < 0, Phi(t) = erfcx(-t/sqrt2)/2 exp(-t^2/2) is taken
 // in log form (Phi underflows below t = -38 in double, -13 in float); for t >= 0, log1p(-Q(t)).
+inline real sf_log_normal_cdf_erfcx(real t, real e) {
+  if (t < real(0)) return log(real(0.5) * e) - real(0.5) * t * t;
+  return sf_log1p(-sf_normal_tail_erfcx(t, e));
+}
+
 inline real sf_log_normal_cdf(real t) {
-  if (t < real(0)) return log(real(0.5) * sf_erfcx_nonneg(-t * SF_INV_SQRT2)) - real(0.5) * t * t;
-  return sf_log1p(-sf_normal_tail(t));
+  return sf_log_normal_cdf_erfcx(t, sf_erfcx_nonneg(abs(t) * SF_INV_SQRT2));
 }
 
 // phi(t)/Phi(t) (inverse Mills ratio), never a quotient of two underflowing numbers: for t < 0 it is
 // sqrt(2/pi)/erfcx(-t/sqrt2), which grows like |t|; for t >= 0 both factors are well scaled.
+inline real sf_phi_over_Phi_erfcx(real t, real e) {
+  if (t < real(0)) return SF_SQRT_2_OVER_PI / e;
+  return sf_normal_pdf(t) / sf_normal_tail_erfcx(-t, e);  // Phi(t) = Q(-t)
+}
+
 inline real sf_phi_over_Phi(real t) {
-  if (t < real(0)) return SF_SQRT_2_OVER_PI / sf_erfcx_nonneg(-t * SF_INV_SQRT2);
-  return sf_normal_pdf(t) / sf_normal_cdf(t);
+  return sf_phi_over_Phi_erfcx(t, sf_erfcx_nonneg(abs(t) * SF_INV_SQRT2));
 }
 
 // The x >= 0 with log Q(x) = log_q, Q(x) = 1 - Phi(x), for log_q <= log(1/2). Newton's method on

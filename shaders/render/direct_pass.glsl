@@ -49,6 +49,8 @@ layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICES) const uint kPreinte
 layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS) const uint kPreintegratedSliceWords = 0xffffffffu;
 layout(constant_id = FACET_RENDER_SPEC_AOVS) const bool kWritesAovs = false;
 layout(constant_id = FACET_RENDER_SPEC_COUNTS_WORK) const bool kCountsWork = false;
+layout(constant_id = FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS) const bool kHasLinearColormaps = true;
+layout(constant_id = FACET_RENDER_SPEC_HAS_STEP_COLORMAPS) const bool kHasStepColormaps = true;
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS
@@ -70,7 +72,8 @@ const bool kTracesHeightFields = false;
 #endif
 
 // This invocation's auxiliary outputs (kWritesAovs), set by radiance() and shade(): camera-space z and
-// the shading normal (0 on a miss); uv and the texture's error estimate (docs/error_estimate.md).
+// the shading normal (0 on a miss); uv, the texture's error estimate (docs/error_estimate.md) and 1 where
+// a texture term models the hit.
 vec4 aov_depth_normal = vec4(0.0);
 vec4 aov_uv_error = vec4(0.0);
 // This invocation's work so far (kCountsWork): renderer/gpu/work_counter.hpp finds them by name.
@@ -102,18 +105,36 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
     field = microsurface_field_sample(m, hit, o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
                                       camera_ray(film + vec2(0.0, pixel_step)));
 #endif
-  // One call casts every kind of hit's shadow ray (each call of the height-field traversal is compiled
-  // on its own). Its origin is offset by a distance relative to the scene's scale at p; less from a
-  // traced field's hits, which are exact to a few float ulps where the field's detail is finer than
-  // the macro-surfaces' offset.
-  bool lit = dot(n, l) > 0.0;
-#ifdef FACET_HEIGHT_FIELDS
-  lit = lit && (!field_hit || field.w > 0.0);  // a filtered hit shaded by statistics alone needs no ray
+  // One call of occluded() casts every shadow ray (each call of the height-field traversal is compiled
+  // on its own): the hit's own, and for a filtered field hit shaded partly by statistics (w < 1) a
+  // second from the flat rectangle (microsurface_field_radiance). The origin is offset by a distance
+  // relative to the scene's scale at p; less from a traced field's hits, which are exact to a few float
+  // ulps where the field's detail is finer than the macro-surfaces' offset.
+  vec2 visibility = vec2(1.0);
+  int rays = 1;
+#if defined(FACET_HEIGHT_FIELDS) && FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+  if (field_hit && field.w < 1.0) rays = 2;
 #endif
-  float offset = field_hit ? 1e-5 : 1e-4;
-  float visibility = lit && occluded(p + n * (offset * max(1.0, length(p))), l, hit, n, kTracesHeightFields) ? 0.0 : 1.0;
+  for (int k = 0; k < rays; ++k) {
+    Hit from = hit;
+    vec3 from_n = n;
+    float offset = field_hit ? 1e-5 : 1e-4;
+    bool fields = kTracesHeightFields;
+    bool lit = dot(n, l) > 0.0;
 #ifdef FACET_HEIGHT_FIELDS
-  if (field_hit) return microsurface_field_radiance(m, hit, field, d, p, n, l, visibility);
+    lit = lit && (!field_hit || field.w > 0.0);  // a filtered hit shaded by statistics alone needs no ray
+    if (k == 1) {  // the statistics model the field's own shadows: only the other objects are tested
+      from = microsurface_flat_hit(hit, d);
+      from_n = from.normal;
+      offset = 1e-4;
+      fields = false;
+      lit = dot(from_n, l) > 0.0;
+    }
+#endif
+    if (lit && occluded(p + from_n * (offset * max(1.0, length(p))), l, from, from_n, fields)) visibility[k] = 0.0;
+  }
+#ifdef FACET_HEIGHT_FIELDS
+  if (field_hit) return microsurface_field_radiance(m, hit, field, d, n, l, visibility);
 #endif
 #if FACET_VARIANT_HAS(FACET_CODE_MICROSURFACE) && !defined(FACET_HEIGHT_FIELDS)  // traced, microsurfaces are hit as fields
   if (kHasMicrosurface && m.kind.x == FACET_MATERIAL_MICROSURFACE) {  // finite planes only (scene loader)
@@ -121,13 +142,13 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
     return microsurface_radiance(m, plane,
                                  microsurface_footprint(m, plane, o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
                                                         camera_ray(film + vec2(0.0, pixel_step)), plane.normal.xyz),
-                                 d, l, visibility, false);
+                                 d, l, visibility.x, false);
   }
 #endif
 #if FACET_VARIANT_HAS(FACET_CODE_MICROFLAKE)
   if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
     return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
-                               visibility, globals.ambient.rgb);
+                               visibility.x, globals.ambient.rgb);
 #endif
   vec3 albedo = m.albedo.rgb;
 #if FACET_VARIANT_HAS(FACET_CODE_TEXTURE)
@@ -141,17 +162,18 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
     vec3 spread;
     albedo = textured_albedo(m, s.uv, duv_dx, duv_dy, spread);
     if (kWritesAovs) {  // the albedo's spread as radiance, scaled by the filter-mismatch factor (eq. 1)
-      vec3 e = lambert_radiance(spread, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
+      vec3 e = lambert_radiance(spread, n, l, globals.light_irradiance.rgb, visibility.x, globals.ambient.rgb);
       aov_uv_error.z = kErrorMismatch * (e.r + e.g + e.b) / 3.0;
+      aov_uv_error.w = 1.0;  // the texture term models this hit (eq. 3' leaves it alone)
     }
   }
 #endif
   vec3 diffracted = vec3(0.0);  // a diffraction material's albedo is its Lambertian base
 #if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION)
   if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION)
-    diffracted = diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility);
+    diffracted = diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility.x);
 #endif
-  return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb) + diffracted;
+  return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility.x, globals.ambient.rgb) + diffracted;
 }
 
 // Radiance along the camera ray through `film` (rgb), and 1 if it hit geometry, 0 if not (a: coverage).

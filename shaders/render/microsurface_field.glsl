@@ -1,6 +1,6 @@
 // A hit on a microsurface's traced height field (render/heightfield_trace.glsl), as each method that
 // traces shades it (docs/microsurface_filtering.md, "Traced height fields"). Included after
-// render/trace.glsl, whose shadow rays it casts.
+// render/trace.glsl, whose Hit it builds the flat rectangle's shadow ray from.
 #ifndef FACET_RENDER_MICROSURFACE_FIELD_GLSL
 #define FACET_RENDER_MICROSURFACE_FIELD_GLSL
 #include "render/microsurface_shading.glsl"
@@ -23,25 +23,26 @@ MicrosurfaceFieldSample microsurface_field_sample(GpuMaterial m, Hit hit, vec3 o
   return MicrosurfaceFieldSample(fp, kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0);
 }
 
+// The hit as the flat rectangle's, its normal facing the ray d: where filtered's statistics' shadow ray
+// starts (they model the shadows of the detail inside the footprint, Smith, so that ray is only tested
+// against the other objects).
+Hit microsurface_flat_hit(Hit hit, vec3 d) {
+  vec3 normal = plane_at(hit.index).normal.xyz;
+  return Hit(hit.t, dot(normal, d) > 0.0 ? -normal : normal, hit.material, kPlane, hit.index, vec2(0.0));
+}
+
 // naive (ss:K): the hit as the reference shades a sample, its light through every field (a field
-// shadows itself) and the other objects: `visibility`, which the caller traces when s.w > 0 (one
-// shadow ray call for every kind of hit: each call of the traversal is compiled on its own).
+// shadows itself) and the other objects: visibility.x, which the caller traces when s.w > 0.
 // filtered: the same where the footprint is within a texel; from two texels on the footprint's
-// statistics around the traced hit, which model the shadows of the detail inside it (Smith), so their
-// light is only tested against the other objects; a blend between (T1). p: the hit, n: its
-// micro-normal facing the viewer.
-vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample s, vec3 d, vec3 p, vec3 n, vec3 l,
-                                 float visibility) {
+// statistics around the traced hit, lit by visibility.y, the flat rectangle's shadow ray; a blend
+// between (T1). n: the hit's micro-normal facing the viewer.
+vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample s, vec3 d, vec3 n, vec3 l,
+                                 vec2 visibility) {
   GpuPlane plane = plane_at(hit.index);
   vec3 c = vec3(0.0);
-  if (s.w > 0.0) c += s.w * microsurface_traced_radiance(m, plane, hit.barycentric, n, -d, l, visibility);
+  if (s.w > 0.0) c += s.w * microsurface_traced_radiance(m, plane, hit.barycentric, n, -d, l, visibility.x);
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)  // naive: s.w = 1
-  if (s.w < 1.0) {
-    vec3 flat_n = dot(plane.normal.xyz, d) > 0.0 ? -plane.normal.xyz : plane.normal.xyz;
-    Hit flat_hit = Hit(hit.t, flat_n, hit.material, kPlane, hit.index, vec2(0.0));
-    float flat_visibility = dot(flat_n, l) > 0.0 && occluded(p + flat_n * (1e-4 * max(1.0, length(p))), l, flat_hit, flat_n, false) ? 0.0 : 1.0;
-    c += (1.0 - s.w) * microsurface_radiance(m, plane, s.fp, d, l, flat_visibility, true);
-  }
+  if (s.w < 1.0) c += (1.0 - s.w) * microsurface_radiance(m, plane, s.fp, d, l, visibility.y, true);
 #endif
   return c;
 }

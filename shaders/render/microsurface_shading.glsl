@@ -48,9 +48,12 @@ MicrosurfaceStatistics microsurface_point_statistics(vec3 p) {
 MicrosurfaceMoments microsurface_tap_moments(GpuMaterial m, vec2 q, vec2 size, float lod, float point_weight) {
   uint first = m.texture.x + 1u, count = m.texture.y;
   vec2 uv = q / size;
-  // mip and colormip use the means only: the second-moment chain is read by filtered alone.
-  MicrosurfaceMoments chain = MicrosurfaceMoments(
-      sample_trilinear(first, count, uv, lod), kTextureMethod >= 3u ? sample_trilinear(first + count, count, uv, lod) : vec4(0.0));
+  // mip and colormip use the means only: the second-moment chain is read by filtered alone, which only
+  // the program that traces height fields runs on microsurfaces.
+  MicrosurfaceMoments chain = MicrosurfaceMoments(sample_trilinear(first, count, uv, lod), vec4(0.0));
+#ifdef FACET_HEIGHT_FIELDS
+  if (kTextureMethod >= 3u) chain.m1 = sample_trilinear(first + count, count, uv, lod);
+#endif
   if (point_weight <= 0.0) return chain;
   MicrosurfaceMoments point = microsurface_point_moments(heightfield_point(heightfield_quads(m), q, m.albedo.w));
   return MicrosurfaceMoments(mix(chain.m0, point.m0, point_weight), mix(chain.m1, point.m1, point_weight));
@@ -110,14 +113,19 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
     heights_lit = vec3(0.0);
     float a = microsurface_lit_exponent(vis);
     bool lit_on_visible_nodes = a <= MS_LIT_SHARED_MAX;
-    for (int k = 0; k < MS_HEIGHT_NODES; ++k) {
-      vec3 c = microsurface_height_colour(m, microsurface_height_node(k, stats.h_mean, stats.h_sigma, vis.lambda_v));
-      heights += c;
-      heights_lit += lit_on_visible_nodes ? microsurface_lit_weight(k, a) * c
-                            : microsurface_height_colour(m, microsurface_height_node(
-                                                                k, stats.h_mean, stats.h_sigma, vis.lambda_v + vis.lambda_l)) /
-                                  float(MS_HEIGHT_NODES);
-    }
+    // Node k of the visible heights, then, where the lit weights are not shared, of the visible and lit
+    // ones: one call of the node and its colour (each call site is compiled on its own).
+    for (int k = 0; k < MS_HEIGHT_NODES; ++k)
+      for (int lit_nodes = 0; lit_nodes < (lit_on_visible_nodes ? 1 : 2); ++lit_nodes) {
+        float lambda = lit_nodes == 0 ? vis.lambda_v : vis.lambda_v + vis.lambda_l;
+        vec3 c = microsurface_height_colour(m, microsurface_height_node(k, stats.h_mean, stats.h_sigma, lambda));
+        if (lit_nodes == 1)
+          heights_lit += c / float(MS_HEIGHT_NODES);
+        else {
+          heights += c;
+          if (lit_on_visible_nodes) heights_lit += microsurface_lit_weight(k, a) * c;
+        }
+      }
     heights /= float(MS_HEIGHT_NODES);
     heights_lit *= vis.lit;
   }
@@ -220,6 +228,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
     MicrosurfaceMoments tm = microsurface_tap_moments(m, tap, size, f.lod, point_weight);
     sum.m0 += tm.m0;
     sum.m1 += tm.m1;
+#ifndef FACET_HEIGHT_FIELDS  // colormip shades the flat rectangle only
     if (kTextureMethod == 2u) {
       vec3 chain = sample_trilinear(m.texture.x + 1u + 2u * m.texture.y, m.texture.y, tap / size, f.lod).rgb;
       if (point_weight > 0.0) {
@@ -228,6 +237,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
       }
       albedo += chain;
     }
+#endif
   }
   MicrosurfaceStatistics stats = microsurface_statistics(sum.m0 / f.taps, sum.m1 / f.taps);
   // The program that traces height fields shades footprints for filtered alone; the other, for mip and

@@ -1,6 +1,7 @@
 // Colour-mapped textures in the direct pass: bilinear and trilinear lookups of the MIP chains, the
 // colour map at a point and against a Gaussian, and the albedo of a texture by the method selected
-// with the specialization constants kTextureMethod and kWritesAovs (declared by the including shader).
+// with the specialization constants kTextureMethod, kWritesAovs, kHasLinearColormaps and kHasStepColormaps
+// (declared by the including shader).
 #ifndef FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #define FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #include "lib/colormap_filter.glsl"
@@ -50,11 +51,18 @@ vec4 bilinear(TexelQuad q) { return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t
 // Bilinear between texel centres, periodic (at level 0 as renderer/cpu/material_shading.cpp).
 vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(texture_level(level), uv)); }
 
+// Both levels through one call of sample_level: lavapipe compiles each call site of an inlined
+// function on its own, and trilinear lookups are made at many sites.
 vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod) {
   float l0 = floor(lod);
   uint level = first + uint(l0);
-  if (l0 + 1.0 >= float(count)) return sample_level(level, uv);
-  return mix(sample_level(level, uv), sample_level(level + 1u, uv), lod - l0);
+  bool blends = l0 + 1.0 < float(count);
+  vec4 fine = vec4(0.0), coarse = vec4(0.0);
+  for (uint i = 0u; i < (blends ? 2u : 1u); ++i) {
+    vec4 s = sample_level(level + i, uv);
+    if (i == 0u) fine = s; else coarse = s;
+  }
+  return blends ? mix(fine, coarse, lod - l0) : fine;
 }
 
 float colormap_position(GpuColormap map, float value) {
@@ -103,33 +111,83 @@ uint colormap_first_point_above(uint first, uint last, float position) {
   return lo;
 }
 
-// E[colormap(t)] for t ~ N(mu, sigma^2) in texture values: the segments and end tails of the map
-// (lib/colormap_filter.glsl), in the map's own parameter. Only the points within 8 sigma of mu and
-// the one beyond on each side are visited (binary searches; the CPU loop likewise skips what is out
-// of reach): outside, every knot is saturated, so the skipped segments and tails contribute 0 to
-// float precision. Each knot is evaluated once and shared by its two segments and the tails.
-vec3 colormap_filtered(GpuColormap map, float mu, float sigma) {
-  float scale = 1.0 / (map.domain.y - map.domain.x);
-  float m = colormap_position(map, mu), s = sigma * abs(scale);
+// Control points farther than kColormapReach standard deviations from the mean are saturated knots,
+// skipped: Q(8) = 6e-16 (docs/colormap_filtering.md, "Step maps").
+const float kColormapReach = 8.0;
+
+// E[colormap(t)] for t ~ N(mu, sigma^2) of a linear map, at m = its position of mu, s = sigma in its
+// parameter: the segments and end tails of lib/colormap_filter.glsl. Only the points within
+// kColormapReach sigma of mu and the one beyond on each side are visited (binary searches; the CPU loop
+// likewise skips what is out of reach): outside, every knot is saturated, so the skipped segments and
+// tails contribute 0 to float precision. Each knot is evaluated once and shared by its two segments and
+// the tails. For a step map (`steps`) the searches and the loop run no step, so no knot costs anything.
+vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
-  float reach = 8.0 * s;
-  uint begin = colormap_first_point_above(first, last, m - reach);
+  float reach = kColormapReach * s;
+  uint begin = colormap_first_point_above(first, steps ? first : last, m - reach);
   begin = begin > first ? begin - 1u : first;
-  uint end = colormap_first_point_above(begin, last, m + reach);
-  vec4 a = colormap_point(begin);
-  float za = colormap_standardize(a.w, m, s);
-  ColormapKnot knot_a = colormap_knot_coarse(za);
-  vec3 sum = a.rgb * knot_a.Phi;
-  for (uint i = begin; i < end; ++i) {
-    vec4 b = colormap_point(i + 1u);
+  uint end = colormap_first_point_above(begin, steps ? begin : last, m + reach);
+  uint knots = steps ? 0u : end - begin + 1u;
+  vec4 a = vec4(0.0);
+  float za = 0.0;
+  ColormapKnot knot_a = ColormapKnot(0.0, 0.0, 0.0, 0.0);
+  vec3 sum = vec3(0.0);
+  for (uint n = 0u; n < knots; ++n) {
+    vec4 b = colormap_point(begin + n);
     float zb = colormap_standardize(b.w, m, s);
     ColormapKnot knot_b = colormap_knot_coarse(zb);
-    sum += colormap_segment_from_knots(knot_a, knot_b, za, zb, a.rgb, map.info.z == 1u ? a.rgb : b.rgb);
+    if (n == 0u) {  // the tail below; the segment from this knot to itself then adds exactly 0
+      sum = b.rgb * knot_b.Phi;
+      a = b;
+      za = zb;
+      knot_a = knot_b;
+    }
+    sum += colormap_segment_from_knots(knot_a, knot_b, za, zb, a.rgb, b.rgb);
     a = b;
     za = zb;
     knot_a = knot_b;
   }
   return sum + a.rgb * knot_a.Phi_reflected;
+}
+
+// E[colormap(t)] for t ~ N(mu, sigma^2) of a step map (eq. K1 of docs/colormap_filtering.md): the map is
+// its first colour plus a jump J_k = c_k - c_{k-1} at each later point x_k, so
+//   E[c(t)] = c_first + sum_k J_k Phi((m - x_k)/s),
+// one coarse normal tail per point. The lanes of a subgroup walk the union of their maps' points together
+// (subgroup-uniform index: one load per point, no per-lane binary search, whose loops and gathers cost
+// twice the sum itself in lavapipe), a lane adding only its own map's jumps (none for a linear map, `steps`
+// false), and stop once every lane's remaining points lie beyond kColormapReach s above its mean.
+vec3 colormap_steps_filtered(GpuColormap map, float m, float s, bool steps) {
+  uint first = map.info.x, last = map.info.x + map.info.y - 1u;
+  uint lo = subgroupMin(steps ? first : ~0u), hi = subgroupMax(steps ? last : 0u);
+  vec3 mean = colormap_point(first).rgb;
+  vec3 before = colormap_point(lo <= hi ? lo : first).rgb;
+  for (uint k = lo; k < hi;) {
+    ++k;
+    vec4 p = colormap_point(k);
+    float z = colormap_standardize(p.w, m, s);
+    if (subgroupAll(!steps || k > last || (k >= first && z > kColormapReach))) break;
+    float x = abs(z);
+    float tail = sf_normal_tail_coarse(x, exp(-0.5 * min(x * x, 1e30)));
+    bool own = steps && k > first && k <= last;
+    mean += own ? (z > 0.0 ? tail : 1.0 - tail) * (p.rgb - before) : vec3(0.0);
+    before = p.rgb;
+  }
+  return mean;
+}
+
+// E[colormap(t)] for t ~ N(mu, sigma^2) in texture values, in the map's own parameter. Each kind of map
+// has its own loops, which run no iteration for the other kind (lavapipe runs both sides of a branch);
+// a scene with one kind only compiles that kind's code (kHasLinearColormaps, kHasStepColormaps): with
+// the linear code present though idle, the noise plane's step map took 1.2-1.3x the device time.
+vec3 colormap_filtered(GpuColormap map, float mu, float sigma) {
+  float m = colormap_position(map, mu), s = sigma * abs(1.0 / (map.domain.y - map.domain.x));
+  if (!kHasLinearColormaps) return colormap_steps_filtered(map, m, s, true);
+  if (!kHasStepColormaps) return colormap_linear_filtered(map, m, s, false);
+  bool steps = map.info.z == 1u;
+  vec3 step_mean = colormap_steps_filtered(map, m, s, steps);
+  vec3 linear_mean = colormap_linear_filtered(map, m, s, steps);
+  return steps ? step_mean : linear_mean;
 }
 
 // T(mu, sigma) from the map's prefiltered table (texels from map.table.x; grid and blend math shared

@@ -4,6 +4,7 @@
 // plane's) and a linear map with a shifted domain; and the spread of the mapped colour around that
 // mean (the error estimate's closed form, docs/error_estimate.md eq. 2) against quadrature.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -11,8 +12,8 @@
 #include <random>
 #include <variant>
 
-#include <boost/math/quadrature/gauss.hpp>
 #include <gtest/gtest.h>
+#include <boost/math/quadrature/gauss.hpp>
 
 #include "colormap_gaussian_probe.spv.h"
 #include "gpu/render_layout.hpp"
@@ -184,6 +185,44 @@ TEST(ColormapTableGpu, ExactFilterOfALongMapMatchesTheCpu) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
+// Step maps are summed over the points of every lane of a subgroup together, each lane adding only its own
+// map's jumps (eq. K1 of docs/colormap_filtering.md). Probes cycle through four maps, so every subgroup of 8
+// lanes mixes them: the noise plane's 3-point step map, a 5-point step map with a shifted domain, a
+// 256-point step map (viridis, where the walk stops once every lane's remaining points are beyond reach)
+// and a linear map; against the double CPU sum, 2e-5 as for one map per subgroup above.
+TEST(ColormapTableGpu, LanesOfDifferentMapsInOneSubgroup) {
+  auto context = test::make_validated_context();
+  Scene scene = two_map_scene();
+  const ScalarTexture texture = std::get<ColormapTextureMaterial>(scene.materials.at(0)).texture;
+  scene.materials.insert(
+      scene.materials.begin() + 1,
+      {ColormapTextureMaterial{
+           texture, Colormap({0.0, 0.1, 0.15, 0.6, 0.9},
+                             {{0.2, 0.4, 0.9}, {1.0, 0.9, 0.1}, {0.0, 0.0, 0.0}, {0.5, 0.1, 0.7}, {0.9, 0.9, 0.9}},
+                             Colormap::Interpolation::Steps, {-1.0, 3.0})},
+       ColormapTextureMaterial{texture, builtin_colormap("viridis", Colormap::Interpolation::Steps, {-0.5, 1.5})}});
+  scene.material_names.insert(scene.material_names.begin() + 1, {"five steps", "viridis steps"});
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<vec4> probes;
+  for (int k = 0; k < 16000; ++k) {
+    const double s = unit(rng);
+    probes.emplace_back(-1.5 + 5.0 * unit(rng), std::pow(s, 4), k % 4, 0);  // sigma from 1e-8 to 1
+  }
+  const std::vector<vec4> gpu = GaussianProbe(*context, scene, false).run(probes, 3);
+  std::array<double, 4> worst{};
+  for (size_t i = 0; i < probes.size(); ++i) {
+    const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(probes[i].z))).colormap;
+    const double error =
+        max_channel(glm::dvec3(gpu[i]) - precompute::filtered_colormap_exact(map, probes[i].x, probes[i].y));
+    worst[size_t(probes[i].z)] = std::max(worst[size_t(probes[i].z)], error);
+    ASSERT_LE(error, 2e-5) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
+  }
+  std::printf("four maps per subgroup, GPU exact vs CPU exact: worst %.2e / %.2e / %.2e / %.2e\n", worst[0], worst[1],
+              worst[2], worst[3]);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
 // Var[c(t)], t ~ N(mu, sigma^2), per channel, by brute force: Gauss-Legendre over pieces of at most
 // sigma / 2 on mu +- 10 sigma, cut at the map's knots (c is a polynomial on each piece, the Gaussian
 // smooth), mean and second moment from the same nodes.
@@ -238,7 +277,8 @@ TEST(ColormapTableGpu, ColourSpreadMatchesQuadrature) {
   const std::vector<vec4> spread = GaussianProbe(*context, scene, false).run(probes, 3);
   const auto total_variation = [](const Colormap& map) {
     glm::dvec3 variation(0.0);
-    for (size_t k = 0; k + 1 < map.colours().size(); ++k) variation += glm::abs(map.colours()[k + 1] - map.colours()[k]);
+    for (size_t k = 0; k + 1 < map.colours().size(); ++k)
+      variation += glm::abs(map.colours()[k + 1] - map.colours()[k]);
     return std::max({variation.x, variation.y, variation.z});
   };
   double worst = 0;
