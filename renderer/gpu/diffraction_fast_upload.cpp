@@ -82,10 +82,12 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
   }
 }
 
-PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data, std::uint64_t binding_words,
+PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data,
+                                              const PreintegratedSlices& slices,
                                               const std::filesystem::path& table_cache) {
-  PreintegratedWords result{{},
-                            slice_preintegrated_words(data.preintegrated_word_count, data.cell_words, binding_words)};
+  if (slices.ranges.empty() || slices.ranges.back().second != data.preintegrated_word_count)
+    throw Error("internal: the preintegrated slices do not cover the tables' words");
+  PreintegratedWords result{{}, slices};
   for (const auto& [begin, end] : result.slices.ranges)
     result.buffers.push_back(vk::Buffer::of<std::uint32_t>(context, end - begin));
   if (data.preintegrated.empty()) return result;

@@ -66,8 +66,10 @@ struct PreintegratedWords {
 
 // The tables placed in `data`, read from `table_cache` (empty: none) or built, straight into the word
 // bindings' memory when the device maps it and one binding holds them (lavapipe), else into one staging
-// buffer copied to the bindings; fills data.preintegrated_scales. The bindings hold at most binding_words.
-PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data, std::uint64_t binding_words,
+// buffer copied to the bindings; fills data.preintegrated_scales. One binding per range of `slices`
+// (slice_preintegrated_words of data's words: the layout the pass's pipeline was specialised for).
+PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data,
+                                              const PreintegratedSlices& slices,
                                               const std::filesystem::path& table_cache);
 
 }  // namespace facet::gpu

@@ -37,25 +37,22 @@ long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diff
   return static_cast<long>(std::ceil(plan.worst_orders) + std::ceil(plan.most_nodes) * per_node);
 }
 
-DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
-                                      const diffraction::DiffractionSettings& settings) {
-  std::vector<glm::vec2> coefficients;
-  std::vector<GpuDiffractionMaterial> materials;
-  std::vector<glm::vec4> wavelengths;
-  FastPathData fast;
-  int most_wavelengths = 0, most_taylor = 0;
+DiffractionPlan plan_diffraction(const vk::Context& context, const Scene& scene,
+                                 const diffraction::DiffractionSettings& settings) {
+  DiffractionPlan plan;
   // The preintegrated tables may take the device's memory, or what the pass's word bindings hold if less.
   const std::uint64_t binding_words = preintegrated_binding_words(context, settings.preintegrated_binding_bytes);
   const std::uint64_t table_memory =
       std::min<std::uint64_t>(vk::memory_limits(context.physical_device()).heap_bytes,
                               sizeof(std::uint32_t) * binding_words * FACET_RENDER_PREINTEGRATED_SLICES);
-  const diffraction::DiffractionMethod method = scene_diffraction_method(scene, settings);
-  const auto all = diffraction::prepare_scene_diffraction(scene, settings);
-  for (size_t i = 0; i < all.size(); ++i) {
-    const auto& prepared = all[i];
+  plan.method = scene_diffraction_method(scene, settings);
+  plan.prepared = diffraction::prepare_scene_diffraction(scene, settings);
+  for (size_t i = 0; i < plan.prepared.size(); ++i) {
+    const auto& prepared = plan.prepared[i];
     if (!prepared) continue;
     const long iterations = diffraction_loop_iterations(*prepared);
-    if (method != diffraction::DiffractionMethod::Preintegrated && iterations + kTraceLoopReserve > kLoopIterationLimit)
+    if (plan.method != diffraction::DiffractionMethod::Preintegrated &&
+        iterations + kTraceLoopReserve > kLoopIterationLimit)
       throw Error("diffraction material '" + scene.material_names[i] +
                   "': " + std::to_string(prepared->samples.lambda_nm.size()) + " wavelengths x " +
                   std::to_string((2 * prepared->tables.r + 1) * (2 * prepared->tables.r + 1)) + " bins x " +
@@ -66,39 +63,52 @@ DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
     const diffraction::WavelengthSamples& s = prepared->samples;
     GpuDiffractionMaterial entry{};  // the fast paths' fields stay zero unless their method fills them
     entry.table = table_info(prepared->tables);
-    entry.offsets = glm::uvec4(coefficients.size(), wavelengths.size(), s.lambda_nm.size(), 0);
-    append_fast_paths(fast, entry, scene, static_cast<uint32_t>(i), *prepared, method, table_memory);
-    materials.push_back(entry);
-    most_wavelengths = std::max(most_wavelengths, static_cast<int>(s.lambda_nm.size()));
-    most_taylor = std::max(most_taylor, prepared->tables.N);
-    coefficients.insert(coefficients.end(), table.begin(), table.end());
-    for (size_t i = 0; i < s.lambda_nm.size(); ++i)
-      wavelengths.emplace_back(static_cast<float>(s.lambda_nm[i]), glm::vec3(s.xyz_weight[i]));
+    entry.offsets = glm::uvec4(plan.coefficients.size(), plan.wavelengths.size(), s.lambda_nm.size(), 0);
+    append_fast_paths(plan.fast, entry, scene, static_cast<uint32_t>(i), *prepared, plan.method, table_memory);
+    plan.materials.push_back(entry);
+    plan.most_wavelengths = std::max(plan.most_wavelengths, static_cast<int>(s.lambda_nm.size()));
+    plan.most_taylor = std::max(plan.most_taylor, prepared->tables.N);
+    plan.coefficients.insert(plan.coefficients.end(), table.begin(), table.end());
+    for (size_t k = 0; k < s.lambda_nm.size(); ++k)
+      plan.wavelengths.emplace_back(static_cast<float>(s.lambda_nm[k]), glm::vec3(s.xyz_weight[k]));
   }
   // The coefficients are one RG32UI texel binding (render/diffraction_bindings.glsl).
-  const uint64_t bytes = coefficients.size() * sizeof(glm::vec2);
+  const uint64_t bytes = plan.coefficients.size() * sizeof(glm::vec2);
   const uint64_t coefficient_limit = sizeof(glm::vec2) * static_cast<uint64_t>(context.limits().maxTexelBufferElements);
   if (bytes > coefficient_limit)
     throw Error("the spectral tables of this scene (" + format_mib(bytes) + ") exceed the device's texel buffer of " +
                 format_mib(coefficient_limit) + "; use gratings with fewer samples or a larger tolerance");
-  PreintegratedWords words = upload_preintegrated_words(context, fast, binding_words, diffraction::table_cache_dir());
+  plan.preintegrated_slices =
+      slice_preintegrated_words(plan.fast.preintegrated_word_count, plan.fast.cell_words, binding_words);
+  return plan;
+}
+
+DiffractionBuffers upload_diffraction(vk::Context& context, DiffractionPlan plan) {
+  FastPathData& fast = plan.fast;
+  PreintegratedWords words =
+      upload_preintegrated_words(context, fast, plan.preintegrated_slices, diffraction::table_cache_dir());
   // Placeholders where a method has no data (a buffer cannot be empty).
   if (fast.preintegrated_scales.empty()) fast.preintegrated_scales.push_back(0.0f);
   if (fast.observer.empty()) fast.observer.emplace_back(0.0f);
-  DiffractionBuffers buffers{vk::Buffer::from(context, std::span<const glm::vec2>(coefficients)),
-                             vk::Buffer::from(context, std::span<const GpuDiffractionMaterial>(materials)),
-                             vk::Buffer::from(context, std::span<const glm::vec4>(wavelengths)),
+  DiffractionBuffers buffers{vk::Buffer::from(context, std::span<const glm::vec2>(plan.coefficients)),
+                             vk::Buffer::from(context, std::span<const GpuDiffractionMaterial>(plan.materials)),
+                             vk::Buffer::from(context, std::span<const glm::vec4>(plan.wavelengths)),
                              std::move(words.buffers),
                              std::move(words.slices),
                              vk::Buffer::from(context, std::span<const float>(fast.preintegrated_scales)),
                              vk::Buffer::from(context, std::span<const glm::vec4>(fast.observer)),
-                             method,
-                             most_wavelengths,
-                             most_taylor,
+                             plan.method,
+                             plan.most_wavelengths,
+                             plan.most_taylor,
                              words.use};
   while (buffers.preintegrated_words.size() < FACET_RENDER_PREINTEGRATED_SLICES)
     buffers.preintegrated_words.push_back(vk::Buffer::from(context, std::span<const uint32_t>()));
   return buffers;
+}
+
+DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
+                                      const diffraction::DiffractionSettings& settings) {
+  return upload_diffraction(context, plan_diffraction(context, scene, settings));
 }
 
 }  // namespace facet::gpu

@@ -3,11 +3,16 @@
 // tables (float) and wavelength samples, prepared for this render (diffraction/prepared_diffraction.hpp).
 #pragma once
 
+#include <optional>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "diffraction/order_wavelengths.hpp"
 #include "diffraction/preintegrated_cache.hpp"
 #include "diffraction/prepared_diffraction.hpp"
+#include "gpu/diffraction_fast_upload.hpp"
+#include "gpu/diffraction_layout.hpp"
 #include "gpu/preintegrated_slices.hpp"
 #include "scene/scene.hpp"
 #include "vk/buffer.hpp"
@@ -46,12 +51,43 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
 // Taylor sums (docs/diffraction_fast_paths.md, "Loop limit").
 long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables);
 
+// What the pass needs of the scene's diffraction before any table is read or built: the method and the
+// preintegrated words' layout (the pipeline's specialization), and the host data the upload places. The
+// pass specialises its pipeline from the plan and uploads the same plan, so the compiled layout and the
+// bound words cannot disagree; planning is cheap (spectral tables, headers, checks), reading the tables
+// is not, and the pass compiles while it reads. Move-only: `fast` points into `prepared`.
+struct DiffractionPlan {
+  DiffractionPlan() = default;
+  DiffractionPlan(DiffractionPlan&&) = default;
+  DiffractionPlan& operator=(DiffractionPlan&&) = default;
+  DiffractionPlan(const DiffractionPlan&) = delete;
+  DiffractionPlan& operator=(const DiffractionPlan&) = delete;
+
+  diffraction::DiffractionMethod method = diffraction::DiffractionMethod::Spectral;  // kDiffractionMethod
+  PreintegratedSlices preintegrated_slices;  // kPreintegratedSlices, kPreintegratedSliceWords
+  std::vector<std::optional<diffraction::PreparedDiffraction>> prepared;  // per scene material
+  std::vector<glm::vec2> coefficients;
+  std::vector<GpuDiffractionMaterial> materials;
+  std::vector<glm::vec4> wavelengths;
+  FastPathData fast;  // the preintegrated tables' places (their words not yet read), the orders' data
+  int most_wavelengths = 0;
+  int most_taylor = 0;
+};
+
 // Diffraction material i of the scene (counting only diffraction materials, in scene order) is
 // entry i of `materials`: the index scene_upload puts in GpuMaterial::kind.y. Throws facet::Error
 // if the tables exceed what the device's texel bindings or memory hold, or if one ray of a material would exceed
 // the loop limit above (spectral and orders; ss:K runs one ray per invocation and dispatch), or if the materials ask
-// for different methods (gpu/diffraction_fast_upload.hpp). A scene without diffraction gets one-element placeholders
-// (the pass binds them, its shader never reads them).
+// for different methods (gpu/diffraction_fast_upload.hpp): all before any preintegrated table is read or built.
+DiffractionPlan plan_diffraction(const vk::Context& context, const Scene& scene,
+                                 const diffraction::DiffractionSettings& settings = {});
+
+// The plan's buffers: the preintegrated tables read from the table cache or built (the slow part), then
+// everything uploaded. A scene without diffraction gets one-element placeholders (the pass binds them, its
+// shader never reads them).
+DiffractionBuffers upload_diffraction(vk::Context& context, DiffractionPlan plan);
+
+// upload_diffraction(context, plan_diffraction(context, scene, settings)).
 DiffractionBuffers upload_diffraction(vk::Context& context, const Scene& scene,
                                       const diffraction::DiffractionSettings& settings = {});
 

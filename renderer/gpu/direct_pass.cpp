@@ -69,7 +69,7 @@ bool uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
 // The specialization constants of the pass by their names in the shaders: what the scene uses, how
 // the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
-                                             const DiffractionBuffers& diffraction) {
+                                             const DiffractionPlan& diffraction) {
   const uint32_t code = direct_pass_code(scene, method);
   const auto has = [code](uint32_t part) { return (code & part) != 0 ? 1u : 0u; };
   const auto constants = std::to_array<vk::SpecConstant>({
@@ -125,7 +125,13 @@ int tile_count(int width, int height, int tile_size) {
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
                        PhaseTimings* timings)
-    : scene_(&runnable(context, scene, method)),
+    : DirectPass(context, scene, method, tile_size, timings, timed(timings, "diffraction", [&] {
+                   return plan_diffraction(context, runnable(context, scene, method), method.diffraction);
+                 })) {}
+
+DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
+                       PhaseTimings* timings, DiffractionPlan diffraction)
+    : scene_(&scene),  // runnable (checked before the plan)
       tile_size_(tile_size > 0 && tile_size <= kMaxTileSize
                      ? tile_size
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
@@ -135,12 +141,11 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       adaptive_budget_(method.adaptive),
       writes_aovs_(writes_aovs(method)),
       counts_work_(method.counts_work),
-      diffraction_(
-          timed(timings, "diffraction", [&] { return upload_diffraction(context, scene, method.diffraction); })),
-      // The specialization needs the diffraction tables' layout, nothing of the textures. The thread
-      // ends before the constructor does (kernel_ waits for it; so does the future if the upload throws).
+      // The specialization needs the diffraction's plan (method, the tables' layout), not their words nor
+      // anything of the textures. The thread ends before the constructor does (kernel_ waits for it; so
+      // does the future if the reading or the upload throws).
       compiling_(std::async(std::launch::async,
-                            [&context, &scene, &method, spec = specialization(scene, method, diffraction_)] {
+                            [&context, &scene, &method, spec = specialization(scene, method, diffraction)] {
                               const std::vector<uint32_t> program = direct_pass_program(scene, method);
                               return std::make_unique<vk::Kernel>(
                                   context, vk::KernelDesc{.name = "render_direct",
@@ -150,6 +155,8 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                                                           .specialization = spec,
                                                           .buffer_kinds = binding_kinds()});
                             })),
+      // The tables' words (the table cache's file, or their build), read while the pipeline compiles.
+      diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, std::move(diffraction)); })),
       buffers_(
           timed(timings, "upload",
                 [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),

@@ -55,6 +55,9 @@ class DirectPass {
   const DiffractionBuffers& diffraction() const { return diffraction_; }
 
  private:
+  // The constructor's work, once the diffraction is planned (its specialization known before the tables are read).
+  DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
+             PhaseTimings* timings, DiffractionPlan diffraction);
   std::vector<const vk::Buffer*> bindings() const;  // scene buffers, pixels, diffraction buffers
   // Renders stratum `stratum` of ss:K into pixels_ for the tile's w x h pixels at (x0, y0); its device ms.
   double dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h, int stratum);
@@ -75,10 +78,11 @@ class DirectPass {
   AdaptiveBudget adaptive_budget_;
   bool writes_aovs_;      // the pass accumulates the auxiliary values (asked for, or filtered:adaptive's estimate)
   bool counts_work_;      // the pixels hold their samples' summed work, not colours (gpu/work_per_pixel.hpp)
-  DiffractionBuffers diffraction_;
-  // The pipeline, compiled on a thread of its own while the textures upload (lavapipe's pipeline
-  // creation is CPU work of its own, the upload mostly waits on small dispatches).
+  // The pipeline, compiled on a thread of its own while the diffraction tables are read and the textures
+  // upload (lavapipe's pipeline creation is CPU work of its own; the table read is one file, the upload
+  // mostly waits on small dispatches).
   std::future<std::unique_ptr<vk::Kernel>> compiling_;
+  DiffractionBuffers diffraction_;
   SceneBuffers buffers_;
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range
   vk::Buffer pixel_list_;  // filtered:adaptive: up to a tile's worth of frame positions to refine

@@ -16,7 +16,7 @@ namespace {
 static_assert(FACET_CODE_ALL ==
               (FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION | FACET_CODE_MICROFLAKE | FACET_CODE_MICROSURFACE |
                FACET_CODE_SPHERES | FACET_CODE_TRIANGLES | FACET_CODE_FILTERED | FACET_CODE_DIFFRACTION_PREINTEGRATED |
-               FACET_CODE_DIFFRACTION_ORDERS));
+               FACET_CODE_DIFFRACTION_ORDERS | FACET_CODE_DIFFRACTION_SPECTRAL));
 
 #define FACET_DIRECT_PASS_VARIANT(array, source, code) \
   DirectPassVariant{#array, array, code, std::string_view(#source) == "render_direct_fields"},
@@ -49,6 +49,8 @@ uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method) {
     const diffraction::DiffractionMethod diffraction = scene_diffraction_method(scene, method.diffraction);
     if (diffraction == diffraction::DiffractionMethod::Preintegrated) code |= FACET_CODE_DIFFRACTION_PREINTEGRATED;
     if (diffraction == diffraction::DiffractionMethod::Orders) code |= FACET_CODE_DIFFRACTION_ORDERS;
+    // `orders` runs the spectral path where restricting does not pay (F.10, F.11).
+    if (diffraction != diffraction::DiffractionMethod::Preintegrated) code |= FACET_CODE_DIFFRACTION_SPECTRAL;
   }
   return code;
 }

@@ -59,7 +59,7 @@
 // (render/direct_pass.glsl; shaders/CMakeLists.txt lists the variants, renderer/gpu/direct_pass_variant.hpp
 // picks the smallest that covers a scene and method). Material families, primitive kinds, the
 // filtered methods' code (filtered, filtered:table: colour-map integrals, microsurface statistics)
-// and the diffraction methods beside spectral (kDiffractionMethod), which every diffraction variant has.
+// and the diffraction methods (kDiffractionMethod): spectral (also orders' fallback), preintegrated, orders.
 #define FACET_CODE_TEXTURE 1
 #define FACET_CODE_DIFFRACTION 2
 #define FACET_CODE_MICROFLAKE 4
@@ -69,7 +69,8 @@
 #define FACET_CODE_FILTERED 64
 #define FACET_CODE_DIFFRACTION_PREINTEGRATED 128
 #define FACET_CODE_DIFFRACTION_ORDERS 256
-#define FACET_CODE_ALL 511
+#define FACET_CODE_DIFFRACTION_SPECTRAL 512
+#define FACET_CODE_ALL 1023
 
 // Workgroups are FACET_RENDER_WORKGROUP x FACET_RENDER_WORKGROUP pixels of a tile.
 #define FACET_RENDER_WORKGROUP 8

@@ -19,28 +19,30 @@ struct PreintegratedSource {
   float R0;
 };
 
-vec3 diffraction_preintegrated_corner(PreintegratedSource s, PreintegratedCell c, int du, int dv, int p) {
-  uint cell = s.first_word + uint(preintegrated_word_index(s.grid, c, 0, 0, 0));
+// Coefficient p at corner (du, dv) of cell c, scaled: the words of the cell whose first word is `cell`.
+// Few call sites: NIR inlines each (four corners per term), and lavapipe's pipeline set-up grows with
+// them (docs/diffraction_fast_paths.md, "Warm wall clock").
+vec3 diffraction_preintegrated_corner(PreintegratedSource s, PreintegratedCell c, uint cell, int du, int dv, int p,
+                                      float scale) {
   uint k = s.first_word + uint(preintegrated_word_index(s.grid, c, du, dv, p));
-  float scale = diffraction_preintegrated_scale(s.first_scale + uint(p));
-  return s.grid.words == 2 ? preintegrated_unpack_half(diffraction_preintegrated_word(cell, k),
-                                                       diffraction_preintegrated_word(cell, k + 1u), scale)
-                           : preintegrated_unpack_float(diffraction_preintegrated_word(cell, k),
-                                                        diffraction_preintegrated_word(cell, k + 1u),
-                                                        diffraction_preintegrated_word(cell, k + 2u), scale);
+  uint x = diffraction_preintegrated_word(cell, k), y = diffraction_preintegrated_word(cell, k + 1u);
+  return s.grid.words == 2 ? preintegrated_unpack_half(x, y, scale)
+                           : preintegrated_unpack_float(x, y, diffraction_preintegrated_word(cell, k + 2u), scale);
 }
 
 // Linear sRGB for wi, wr (unit vectors toward the light and the viewer in the grating's frame, z >= 0).
 vec3 diffraction_preintegrated_rgb(PreintegratedSource s, vec3 wi, vec3 wr) {
   DiffractionGeometry g = diffraction_geometry(wi, wr, s.floor_lambda_nm, s.sigma_nm, s.hs_nm);
   PreintegratedCell c = preintegrated_cell(s.grid, preintegrated_uv(wi, wr));
+  uint cell = s.first_word + uint(preintegrated_word_index(s.grid, c, 0, 0, 0));
   float delta = g.w - s.w_centre;
   vec3 acc = vec3(0.0);
   for (int p = s.grid.terms - 1; p >= 0; --p) {
-    acc = preintegrated_horner_step(acc, delta, c, diffraction_preintegrated_corner(s, c, 0, 0, p),
-                                    diffraction_preintegrated_corner(s, c, 1, 0, p),
-                                    diffraction_preintegrated_corner(s, c, 0, 1, p),
-                                    diffraction_preintegrated_corner(s, c, 1, 1, p));
+    float scale = diffraction_preintegrated_scale(s.first_scale + uint(p));
+    acc = preintegrated_horner_step(acc, delta, c, diffraction_preintegrated_corner(s, c, cell, 0, 0, p, scale),
+                                    diffraction_preintegrated_corner(s, c, cell, 1, 0, p, scale),
+                                    diffraction_preintegrated_corner(s, c, cell, 0, 1, p, scale),
+                                    diffraction_preintegrated_corner(s, c, cell, 1, 1, p, scale));
   }
   return preintegrated_linear_srgb(g, acc, s.sigma_nm, s.R0);
 }

@@ -8,7 +8,8 @@
 //   2 orders     the Taylor BRDF at the wavelengths near the grating's orders (diffraction_observer);
 //                spectral where the host found restricting not worth it (not periodic, or orders unresolved: F.10, F.11)
 // The includer declares kHasDiffraction and kDiffractionMethod before including this file; a variant
-// of the pass may leave preintegrated and orders out (render/variant_code.glsl).
+// of the pass compiles in only the methods it covers (render/variant_code.glsl): `preintegrated` alone
+// leaves the spectral path out, which `orders` keeps for its fallback.
 #ifndef FACET_RENDER_DIFFRACTION_SHADING_GLSL
 #define FACET_RENDER_DIFFRACTION_SHADING_GLSL
 #include "layout/diffraction_layout.glsl"
@@ -24,6 +25,7 @@ const uint kDiffractionSpectral = 0u;
 const uint kDiffractionPreintegrated = 1u;
 const uint kDiffractionOrders = 2u;
 
+#if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_SPECTRAL)
 // sum_i BRDF(lambda_i) xyz_weight_i over the material's wavelength samples.
 vec3 diffraction_spectral_xyz(GpuDiffractionMaterial m, vec3 wi, vec3 wr) {
   vec3 xyz = vec3(0.0);
@@ -33,6 +35,7 @@ vec3 diffraction_spectral_xyz(GpuDiffractionMaterial m, vec3 wi, vec3 wr) {
   }
   return xyz;
 }
+#endif
 
 // Radiance diffracted toward v by diffraction material `index` at a point with shading normal n
 // (facing the viewer) and tangent dpdu, lit from l with the light's visibility.
@@ -66,10 +69,12 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
       rgb = spectral_xyz_to_linear_srgb(diffraction_spectral_xyz(m, d.wi, d.wr));
       break;
 #endif
+#if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_SPECTRAL)
     case kDiffractionSpectral:
     default:
       rgb = spectral_xyz_to_linear_srgb(diffraction_spectral_xyz(m, d.wi, d.wr));
       break;
+#endif
   }
   return diffraction_radiance_rgb(rgb, d.wi.z, globals.light_irradiance.rgb, visibility);
 }

@@ -60,11 +60,16 @@ TEST(DirectPassVariants, ScenesNeedTheirFamiliesPrimitivesAndMethods) {
   EXPECT_EQ(code("default.json", "filtered"), uint32_t{FACET_CODE_SPHERES | FACET_CODE_TRIANGLES});
   EXPECT_EQ(code("colormap_seams_cube.json", "mip"), uint32_t{FACET_CODE_TEXTURE | FACET_CODE_TRIANGLES});
   EXPECT_EQ(code("microflake_blend.json", "naive"), uint32_t{FACET_CODE_MICROFLAKE | FACET_CODE_SPHERES});
-  EXPECT_EQ(code("diffraction_plate.json", "naive"), uint32_t{FACET_CODE_DIFFRACTION});
+  EXPECT_EQ(code("diffraction_plate.json", "naive"), uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_SPECTRAL});
   RenderMethod orders = RenderMethod::parse("naive");
   orders.diffraction.method = diffraction::DiffractionMethod::Orders;
   EXPECT_EQ(gpu::direct_pass_code(load_scene(kScenes / "snake_fingers.json"), orders),
-            uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_ORDERS | FACET_CODE_TRIANGLES});
+            uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_SPECTRAL | FACET_CODE_DIFFRACTION_ORDERS |
+                     FACET_CODE_TRIANGLES});
+  RenderMethod preintegrated = orders;  // the one method without the spectral path
+  preintegrated.diffraction.method = diffraction::DiffractionMethod::Preintegrated;
+  EXPECT_EQ(gpu::direct_pass_code(load_scene(kScenes / "diffraction_plate.json"), preintegrated),
+            uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_PREINTEGRATED});
   EXPECT_EQ(code("microsurface_terrain.json", "filtered"), uint32_t{FACET_CODE_MICROSURFACE | FACET_CODE_FILTERED});
   const Scene terrain = load_scene(kScenes / "microsurface_terrain.json");
   EXPECT_TRUE(gpu::direct_pass_variant(terrain, RenderMethod::parse("naive")).height_fields);
