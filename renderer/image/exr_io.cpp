@@ -189,7 +189,10 @@ void write_exr(const std::filesystem::path& path, const Image& image, const ExrM
   write_file_atomically(path, [&](std::FILE* file) {
     check_writable(image, type, non_finite);
     Imf::Header header(image.width, image.height);
+    // ZIP at deflate's fastest level: on a 1280x720 half frame of fine texture, 93-99 ms of CPU against
+    // 122-142 at OpenEXR's default level 4, for a file 4.6 % larger (docs/render_speed.md, "Writing a frame").
     header.compression() = Imf::ZIP_COMPRESSION;
+    header.zipCompressionLevel() = 1;
     insert_metadata(header, metadata);
     // OpenEXR converts pixel types when reading but not when writing, so half data is rounded here
     // (Imath: round to nearest, ties to even).
