@@ -67,9 +67,7 @@ void write_manifest(const std::filesystem::path& path, const Manifest& manifest)
   Json items = Json::object();
   for (const auto& [output, entry] : manifest) items[output] = to_json(entry);
   const std::string text = Json{{"facet_manifest", kManifestVersion}, {"items", items}}.dump(1) + "\n";
-  write_file_atomically(path, [&](std::FILE* file) {
-    if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) throw Error("write failed");
-  });
+  write_file_atomically(path, text);
 }
 
 std::filesystem::path shard_manifest_path(const std::filesystem::path& manifest, const Shard& shard) {

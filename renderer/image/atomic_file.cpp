@@ -74,4 +74,10 @@ void write_file_atomically(const std::filesystem::path& destination, const std::
   }
 }
 
+void write_file_atomically(const std::filesystem::path& destination, std::string_view bytes) {
+  write_file_atomically(destination, [bytes](std::FILE* file) {
+    if (std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size()) throw std::runtime_error("write failed");
+  });
+}
+
 }  // namespace facet

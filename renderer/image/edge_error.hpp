@@ -12,7 +12,7 @@
 
 namespace facet {
 
-// The edge term of each pixel, from the image's colours and coverage and each pixel's normal and texture
+// The edge term of each pixel, from the image's colours and coverage, each pixel's normal and
 // whether a texture term models it (pixels: one per pixel, row-major; image.alpha must be present).
 std::vector<float> edge_error(const Image& image, const std::vector<AovPixel>& pixels, int samples_per_axis);
 

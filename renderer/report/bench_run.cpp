@@ -56,10 +56,6 @@ std::pair<int, int> resolution(const BenchOptions& options, const Camera& camera
   return frames::frame_size(camera, quick_width ? std::min(kQuickWidth, camera.width) : options.width, options.height);
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  write_file_atomically(path, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
-}
-
 // How well a method's per-pixel error estimate (docs/error_estimate.md) ranks and sizes its true error:
 // one more frame with the `error` channel, untimed (its program accumulates the estimate, the timed
 // one does not). Empty for methods without an estimate.
@@ -189,15 +185,15 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   run.plot = run.name + "/speed_error.svg";
   run.plot_svg =
       speed_error_svg(points, {run.name + ": speed vs error", "time per frame (ms, median)", "RMSE vs reference"});
-  write_text(options.out_dir / run.plot, run.plot_svg);
+  write_file_atomically(options.out_dir / run.plot, run.plot_svg);
   run.wall_plot = run.name + "/wall_error.svg";
   run.wall_plot_svg = speed_error_svg(
       wall_points, {run.name + ": wall time vs error", "wall time per frame (ms, median)", "RMSE vs reference"});
-  write_text(options.out_dir / run.wall_plot, run.wall_plot_svg);
+  write_file_atomically(options.out_dir / run.wall_plot, run.wall_plot_svg);
   if (!calibration.empty()) {
     run.calibration_plot = run.name + "/calibration.svg";
     run.calibration_plot_svg = calibration_svg(calibration, run.name + ": error estimate calibration");
-    write_text(options.out_dir / run.calibration_plot, run.calibration_plot_svg);
+    write_file_atomically(options.out_dir / run.calibration_plot, run.calibration_plot_svg);
   }
 }
 

@@ -125,13 +125,10 @@ nlohmann::json run_json(const BenchRun& run) {
 }
 
 void write_report_files(const BenchRun& run, const std::filesystem::path& out_dir) {
-  auto write = [](const std::filesystem::path& path, const std::string& text) {
-    write_file_atomically(path, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
-  };
-  write(out_dir / "results.json", results_json(run).dump(1) + "\n");
-  write(out_dir / "run.json", run_json(run).dump(1) + "\n");
-  write(out_dir / "report.md", report_markdown(run));
-  write(out_dir / "index.html", report_html(run));
+  write_file_atomically(out_dir / "results.json", results_json(run).dump(1) + "\n");
+  write_file_atomically(out_dir / "run.json", run_json(run).dump(1) + "\n");
+  write_file_atomically(out_dir / "report.md", report_markdown(run));
+  write_file_atomically(out_dir / "index.html", report_html(run));
 }
 
 }  // namespace facet::report
