@@ -27,6 +27,22 @@ bool read_le32(std::istream& in, std::uint32_t& out) {
   return true;
 }
 
+// A channel list's pixel types, each one of OpenEXR's UINT, HALF, FLOAT (0, 1, 2): OpenEXR 3.1 takes its
+// sample size from any other value unchecked, and a 900-byte file with one then costs gigabytes to read.
+// Entries: name, 0, then int32 pixel type, pLinear, 3 reserved bytes, int32 x and y sampling; a 0 ends
+// the list. A list too short to parse is left to OpenEXR.
+void check_channel_types(std::istream& in, const ExrAttribute& list) {
+  in.seekg(static_cast<std::streamoff>(list.offset));  // the walker seeks past the data afterwards
+  std::string name;
+  std::uint32_t type = 0, ignored = 0;
+  while (read_name(in, name) && !name.empty()) {
+    if (!read_le32(in, type) || !read_le32(in, ignored) || !read_le32(in, ignored) || !read_le32(in, ignored)) return;
+    if (type > 2)
+      throw std::runtime_error("channel '" + name + "' has pixel type " + std::to_string(type) +
+                               ", not one of OpenEXR's uint, half, float (0, 1, 2)");
+  }
+}
+
 }  // namespace
 
 void walk_exr_headers(std::istream& in, const std::function<bool(const ExrAttribute&)>& visit) {
@@ -56,6 +72,7 @@ void check_exr_header_sizes(std::istream& in, std::uint64_t file_bytes) {
     if (a.size > left)
       throw std::runtime_error("header attribute '" + a.name + "' claims " + std::to_string(a.size) +
                                " bytes, the file has " + std::to_string(left) + " left");
+    if (a.type == "chlist") check_channel_types(in, a);
     return true;
   });
 }

@@ -23,7 +23,9 @@ struct ExrAttribute {
 void walk_exr_headers(std::istream& file, const std::function<bool(const ExrAttribute&)>& visit);
 
 // Throws std::runtime_error naming the attribute if one declares more bytes than the file holds
-// after it. Headers it cannot parse are left to OpenEXR, which then gives its own error.
+// after it, or naming the channel if a channel list has a pixel type OpenEXR does not define (whose
+// sample size OpenEXR 3.1 would read unchecked). Headers it cannot parse are left to OpenEXR, which
+// then gives its own error.
 void check_exr_header_sizes(std::istream& file, std::uint64_t file_bytes);
 
 }  // namespace facet

@@ -319,6 +319,32 @@ TEST(ExrIo, HostileHeaderClaimsCostNoMemory) {
   }
 }
 
+// A pixel type OpenEXR does not define (0xff000002 for R) in an otherwise valid file: OpenEXR 3.1 takes
+// its sample size unchecked and grew past 2 GB reading a 900-byte file so made (fuzz/regressions/exr/
+// invalid_pixel_type.exr); read_exr refuses it in one line naming the channel, within a bounded size.
+TEST(ExrIo, UndefinedPixelTypesAreRefusedWithoutCost) {
+  TempDir dir;
+  write_exr(dir / "whole.exr", Image(8, 8, glm::vec3(0.3f)), {}, ExrPixelType::Half);
+  std::string bytes = read_bytes(dir / "whole.exr");
+  const std::size_t list = bytes.find(std::string("chlist\0", 7));
+  ASSERT_NE(list, std::string::npos);
+  const std::size_t red = bytes.find(std::string("R\0", 2), list);  // channels are stored by name: B, G, R
+  ASSERT_NE(red, std::string::npos);
+  bytes[red + 2 + 3] = '\xff';  // the pixel type's high byte
+  std::ofstream(dir / "bad.exr", std::ios::binary) << bytes;
+  const test::ChildRun run = test::run_in_child([&] {
+    try {
+      read_exr(dir / "bad.exr");
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      return message.find('\n') == std::string::npos && message.find("channel 'R'") != std::string::npos ? 0 : 2;
+    }
+    return 1;
+  });
+  EXPECT_EQ(run.exit_code, 0);  // 1: accepted, 2: not one line naming the channel
+  EXPECT_LT(run.rss_growth_kib, 256 * 1024);
+}
+
 // Files facet does not write itself, made with OpenEXR directly: a Y-only image with an offset data
 // window, and an RGBA image.
 void write_channels(const std::filesystem::path& path, const Imath::Box2i& window,
