@@ -8,13 +8,16 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <tuple>
+#include <utility>
 #include <type_traits>
 #include <vector>
 
 #include "common/content_hash.hpp"
 #include "common/error.hpp"
+#include "common/mapped_file.hpp"
 #include "image/atomic_file.hpp"
 
 namespace facet::diffraction {
@@ -22,7 +25,7 @@ namespace facet::diffraction {
 namespace {
 
 // Bump when the file layout or the tables' bytes for the same inputs change (a new build algorithm).
-constexpr std::string_view kFormat = "facet preintegrated tables v4\n";
+constexpr std::string_view kFormat = "facet preintegrated tables v5\n";
 constexpr size_t kKeyChars = 32;  // ContentHash::hex()
 
 template <class T>
@@ -86,63 +89,57 @@ Header header_of(const PreintegratedTables& t) {
           t.word_count()};
 }
 
-// The file: format line, key, header, scales, words, then the checksum of all of them.
+// Where the words start in a file: the first multiple of kWordsAlignment after the format line, key,
+// header and scales, so that a device importing host memory (vk::Buffer::import_host: lavapipe asks
+// 4 KiB) can take them where the file's mapping holds them.
+constexpr size_t kWordsAlignment = size_t{1} << 16;
+
+size_t words_offset(std::uint64_t scales) {
+  const size_t before = kFormat.size() + kKeyChars + sizeof(Header) + scales * sizeof(float);
+  return (before + kWordsAlignment - 1) / kWordsAlignment * kWordsAlignment;
+}
+
+// The file: format line, key, header, scales, zeros up to words_offset, the words, then the checksum of
+// all but the zeros.
 void write_tables(std::FILE* out, const PreintegratedTables& t, std::span<const std::uint32_t> words,
                   const std::string& key) {
   const Header h = header_of(t);
   const std::string prefix = std::string(kFormat) + key;
-  Checksum sum;  // over the same parts read_tables reads, as the tail of each is padded
   const std::string_view packed(reinterpret_cast<const char*>(words.data()), words.size_bytes());
-  for (std::string_view part : {std::string_view(prefix), bytes_of(h), bytes_of(t.scale), packed}) {
-    sum.add(part);
+  const std::string zeros(words_offset(h.scales) - prefix.size() - sizeof(h) - h.scales * sizeof(float), '\0');
+  Checksum sum;  // over the same parts read_tables reads, as the tail of each is padded
+  for (std::string_view part : {std::string_view(prefix), bytes_of(h), bytes_of(t.scale), std::string_view(zeros), packed}) {
+    if (part.data() != zeros.data()) sum.add(part);
     if (std::fwrite(part.data(), 1, part.size(), out) != part.size()) throw Error("short write");
   }
   const std::uint64_t value = sum.value();
   if (std::fwrite(&value, sizeof(value), 1, out) != 1) throw Error("short write");
 }
 
-// Reads `size` bytes into `data` and adds them to the checksum, a chunk at a time while it is in the
-// CPU's cache; false if the file ends first. Chunks are multiples of 8 bytes, so only the part's tail
-// is padded, as when write_tables adds it whole.
-bool read_part(std::FILE* in, void* data, size_t size, Checksum& sum) {
-  constexpr size_t kChunk = size_t{1} << 20;
-  char* bytes = static_cast<char*>(data);
-  for (size_t done = 0; done < size;) {
-    const size_t n = std::min(kChunk, size - done);
-    if (std::fread(bytes + done, 1, n, in) != n) return false;
-    sum.add({bytes + done, n});
-    done += n;
-  }
-  return true;
-}
-
-// Reads `file` into t.scale and `words` if it is a complete file of this key whose header is t's; else
-// false (`words` may then hold part of the file).
-bool read_tables(const std::filesystem::path& file, const std::string& key, PreintegratedTables& t,
-                 std::span<std::uint32_t> words) {
-  std::error_code error;
-  const auto size = std::filesystem::file_size(file, error);
+// `file` mapped, if it is a complete file of this key whose header is t's and whose checksum holds: its
+// scales go to t.scale.
+std::optional<MappedTableWords> map_tables(const std::filesystem::path& file, const std::string& key,
+                                           PreintegratedTables& t) {
   const Header expected = header_of(t);
-  const size_t fixed = kFormat.size() + kKeyChars + sizeof(Header) + sizeof(std::uint64_t);
-  if (error || size != fixed + expected.scales * sizeof(float) + expected.packed * sizeof(std::uint32_t) ||
-      words.size() != expected.packed)
-    return false;
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(file.c_str(), "rb"), &std::fclose);
-  if (!in) return false;
+  const size_t offset = words_offset(expected.scales);
+  const size_t size = offset + expected.packed * sizeof(std::uint32_t) + sizeof(std::uint64_t);
+  std::shared_ptr<const MappedFile> mapped = MappedFile::open(file);
+  if (!mapped || mapped->bytes().size() != size) return std::nullopt;
+  const char* bytes = reinterpret_cast<const char*>(mapped->bytes().data());
+  const std::string prefix = std::string(kFormat) + key;
+  const std::string_view header(bytes + prefix.size(), sizeof(Header));
+  const std::string_view scales(header.data() + header.size(), expected.scales * sizeof(float));
+  const std::string_view words(bytes + offset, expected.packed * sizeof(std::uint32_t));
+  if (std::string_view(bytes, prefix.size()) != prefix || header != bytes_of(expected)) return std::nullopt;
   Checksum sum;
-  std::string prefix(kFormat.size() + kKeyChars, '\0');
-  Header h;
-  if (!read_part(in.get(), prefix.data(), prefix.size(), sum) || prefix != std::string(kFormat) + key ||
-      !read_part(in.get(), &h, sizeof(h), sum) || std::memcmp(&h, &expected, sizeof(h)) != 0)
-    return false;
-  std::vector<float> scale(h.scales);
-  std::uint64_t stored = 0;
-  if (!read_part(in.get(), scale.data(), h.scales * sizeof(float), sum) ||
-      !read_part(in.get(), words.data(), words.size_bytes(), sum) ||
-      std::fread(&stored, sizeof(stored), 1, in.get()) != 1 || stored != sum.value())
-    return false;
-  t.scale = std::move(scale);
-  return true;
+  for (std::string_view part : {std::string_view(bytes, prefix.size()), header, scales, words}) sum.add(part);
+  std::uint64_t stored;
+  std::memcpy(&stored, words.data() + words.size(), sizeof(stored));
+  if (stored != sum.value()) return std::nullopt;
+  t.scale.resize(expected.scales);
+  std::memcpy(t.scale.data(), scales.data(), scales.size());
+  return MappedTableWords{std::move(mapped),
+                          {reinterpret_cast<const std::uint32_t*>(words.data()), expected.packed}};
 }
 
 }  // namespace
@@ -223,6 +220,40 @@ const char* table_cache_use_name(TableCacheUse use) {
   }
 }
 
+namespace {
+
+// The cache file of these inputs and its key.
+std::pair<std::filesystem::path, std::string> table_file(const std::filesystem::path& cache_dir,
+                                                         const SpectralTables& tables, const WavelengthSamples& samples,
+                                                         const PreintegratedDomain& domain,
+                                                         const PreintegrationSettings& settings) {
+  std::string key = preintegrated_cache_key(tables, samples, domain, settings);
+  return {cache_dir / "preintegrated" / (key + ".tables"), key};
+}
+
+std::optional<MappedTableWords> map_and_refresh(const std::filesystem::path& file, const std::string& key,
+                                                PreintegratedTables& header) {
+  std::optional<MappedTableWords> mapped = map_tables(file, key, header);
+  if (mapped) {
+    std::error_code ignored;  // the hit makes it the most recently used (a read-only cache stays as it is)
+    std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
+  }
+  return mapped;
+}
+
+}  // namespace
+
+std::optional<MappedTableWords> map_cached_preintegrated_words(const std::filesystem::path& cache_dir,
+                                                               const SpectralTables& tables,
+                                                               const WavelengthSamples& samples,
+                                                               const PreintegratedDomain& domain,
+                                                               const PreintegrationSettings& settings,
+                                                               PreintegratedTables& header) {
+  if (cache_dir.empty()) return std::nullopt;
+  const auto [file, key] = table_file(cache_dir, tables, samples, domain, settings);
+  return map_and_refresh(file, key, header);
+}
+
 TableCacheUse cached_preintegrated_words(const std::filesystem::path& cache_dir, const SpectralTables& tables,
                                          const WavelengthSamples& samples, const PreintegratedDomain& domain,
                                          const PreintegrationSettings& settings, PreintegratedTables& header,
@@ -231,18 +262,16 @@ TableCacheUse cached_preintegrated_words(const std::filesystem::path& cache_dir,
     build_preintegrated_words(tables, samples, header, words);
     return TableCacheUse::Off;
   }
-  const std::string key = preintegrated_cache_key(tables, samples, domain, settings);
-  const std::filesystem::path folder = cache_dir / "preintegrated";
-  const std::filesystem::path file = folder / (key + ".tables");
-  if (read_tables(file, key, header, words)) {
-    std::error_code ignored;  // the hit makes it the most recently used (a read-only cache stays as it is)
-    std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
+  const auto [file, key] = table_file(cache_dir, tables, samples, domain, settings);
+  if (const std::optional<MappedTableWords> mapped = map_and_refresh(file, key, header);
+      mapped && mapped->words.size() == words.size()) {
+    std::copy(mapped->words.begin(), mapped->words.end(), words.begin());
     return TableCacheUse::Hit;
   }
   build_preintegrated_words(tables, samples, header, words);
   try {
     write_file_atomically(file, [&](std::FILE* out) { write_tables(out, header, words, key); });
-    evict_table_files(folder, cache_max_bytes, file);
+    evict_table_files(file.parent_path(), cache_max_bytes, file);
   } catch (const std::exception& e) {
     std::cerr << "facet: warning: the preintegrated tables were not cached: " << e.what() << "\n";
   }

@@ -4,9 +4,12 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
+#include "common/mapped_file.hpp"
 #include "diffraction/preintegrated_tables.hpp"
 
 namespace facet::diffraction {
@@ -38,6 +41,23 @@ struct CachedPreintegratedTables {
   PreintegratedTables tables;
   TableCacheUse use = TableCacheUse::Off;
 };
+
+// A cache file's words where its mapping holds them, page-aligned (vk::Buffer::import_host can take
+// them as they are); valid while `file` lives.
+struct MappedTableWords {
+  std::shared_ptr<const MappedFile> file;
+  std::span<const std::uint32_t> words;
+};
+
+// The words of `cache_dir/preintegrated/<key>.tables` mapped, when that file is complete and this key's
+// (as cached_preintegrated_words checks it), with header.scale filled; nullopt without a cache or such a
+// file (the caller then builds them with cached_preintegrated_words, which writes the file).
+std::optional<MappedTableWords> map_cached_preintegrated_words(const std::filesystem::path& cache_dir,
+                                                               const SpectralTables& tables,
+                                                               const WavelengthSamples& samples,
+                                                               const PreintegratedDomain& domain,
+                                                               const PreintegrationSettings& settings,
+                                                               PreintegratedTables& header);
 
 // build_preintegrated_words, read from `cache_dir/preintegrated/<key>.tables` when that file is
 // complete and this key's (size, key, header and a checksum of its bytes are checked: a torn or corrupt

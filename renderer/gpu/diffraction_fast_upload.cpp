@@ -1,12 +1,15 @@
 #include "gpu/diffraction_fast_upload.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <variant>
 
 #include "common/error.hpp"
 #include "diffraction/order_wavelengths.hpp"
+#include "diffraction/preintegrated_cache.hpp"
 #include "diffraction/preintegrated_tables.hpp"
 #include "gpu/diffraction_domain.hpp"
 #include "gpu/diffraction_upload.hpp"
@@ -82,12 +85,49 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
   }
 }
 
+namespace {
+
+// The one material's tables bound where the cache file's mapping holds them (no copy, no allocation:
+// its pages come from the page cache as the checksum reads them), when the device imports host memory
+// and one binding holds the tables; nullopt otherwise, or without a cache file of them.
+std::optional<vk::Buffer> import_cached_words(vk::Context& context, FastPathData& data,
+                                              const PreintegratedSlices& slices,
+                                              const std::filesystem::path& table_cache) {
+  const VkDeviceSize alignment = context.host_import_alignment();
+  if (alignment == 0 || data.preintegrated.size() != 1 || slices.ranges.size() != 1) return std::nullopt;
+  PendingTables& p = data.preintegrated.front();
+  std::optional<diffraction::MappedTableWords> mapped;
+  try {
+    mapped = diffraction::map_cached_preintegrated_words(table_cache, p.prepared->tables, p.prepared->samples,
+                                                         p.domain, p.settings, p.header);
+  } catch (const Error& e) {
+    throw Error("diffraction material '" + p.material + "': " + e.what());
+  }
+  if (!mapped) return std::nullopt;
+  auto* words = const_cast<std::uint32_t*>(mapped->words.data());  // copy-on-write: the device only reads
+  const auto* end = reinterpret_cast<const std::byte*>(mapped->file->data()) + mapped->file->mapped_bytes();
+  const VkDeviceSize bytes = mapped->words.size_bytes();
+  const VkDeviceSize span = (bytes + alignment - 1) / alignment * alignment;
+  if (reinterpret_cast<std::uintptr_t>(words) % alignment != 0 ||
+      span > static_cast<VkDeviceSize>(end - reinterpret_cast<const std::byte*>(words)))
+    return std::nullopt;
+  std::copy(p.header.scale.begin(), p.header.scale.end(), data.preintegrated_scales.begin());
+  return vk::Buffer::import_host(context, words, bytes, sizeof(std::uint32_t), std::move(mapped->file));
+}
+
+}  // namespace
+
 PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data,
                                               const PreintegratedSlices& slices,
                                               const std::filesystem::path& table_cache) {
   if (slices.ranges.empty() || slices.ranges.back().second != data.preintegrated_word_count)
     throw Error("internal: the preintegrated slices do not cover the tables' words");
   PreintegratedWords result{{}, slices};
+  if (std::optional<vk::Buffer> imported = import_cached_words(context, data, slices, table_cache)) {
+    result.buffers.push_back(std::move(*imported));
+    result.use = diffraction::TableCacheUse::Hit;
+    return result;
+  }
   for (const auto& [begin, end] : result.slices.ranges)
     result.buffers.push_back(vk::Buffer::of<std::uint32_t>(context, end - begin));
   if (data.preintegrated.empty()) return result;

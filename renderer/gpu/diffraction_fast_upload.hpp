@@ -64,9 +64,11 @@ struct PreintegratedWords {
   diffraction::TableCacheUse use = diffraction::TableCacheUse::Off;  // Hit: every table came from the cache
 };
 
-// The tables placed in `data`, read from `table_cache` (empty: none) or built, straight into the word
-// bindings' memory when the device maps it and one binding holds them (lavapipe), else into one staging
-// buffer copied to the bindings; fills data.preintegrated_scales. One binding per range of `slices`
+// The tables placed in `data`, from `table_cache` (empty: none) or built. A device that imports host
+// memory (lavapipe) binds one material's cached tables where the file's mapping holds them, when one
+// binding holds them; else they are read or built straight into the word bindings' memory when the
+// device maps it and one binding holds them, else into one staging buffer copied to the bindings. Fills
+// data.preintegrated_scales. One binding per range of `slices`
 // (slice_preintegrated_words of data's words: the layout the pass's pipeline was specialised for).
 PreintegratedWords upload_preintegrated_words(vk::Context& context, FastPathData& data,
                                               const PreintegratedSlices& slices,

@@ -1,5 +1,7 @@
 #include "vk/buffer.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <utility>
 
@@ -7,28 +9,32 @@
 
 namespace facet::vk {
 
-Buffer::Buffer(Context& context, VkDeviceSize bytes)
-    : Buffer(context, bytes,
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
-                 VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT |
-                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                 VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-             false) {}
+namespace {
+constexpr VkBufferUsageFlags kAnyUse = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
+                                       VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                                       VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+constexpr VkMemoryPropertyFlags kMappable = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+}  // namespace
+
+Buffer::Buffer(Context& context, VkDeviceSize bytes) : Buffer(context, bytes, kAnyUse, false) {}
+
+void Buffer::create(VkBufferUsageFlags usage, const void* next) {
+  if (size_ == 0) throw Error("internal: a Vulkan buffer of 0 bytes was requested");
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, next};
+  info.size = size_;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  check(vkCreateBuffer(context_->device(), &info, nullptr, &buffer_), "vkCreateBuffer");
+}
 
 Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, bool host_visible)
     : context_(&context), size_(bytes) {
-  if (bytes == 0) throw Error("internal: a Vulkan buffer of 0 bytes was requested");
+  create(usage, nullptr);
   VkDevice device = context.device();
-  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-  info.size = bytes;
-  info.usage = usage;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  check(vkCreateBuffer(device, &info, nullptr, &buffer_), "vkCreateBuffer");
   try {
     VkMemoryRequirements needs;
     vkGetBufferMemoryRequirements(device, buffer_, &needs);
-    constexpr VkMemoryPropertyFlags kMappable =
-        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     uint32_t type = host_visible
                         ? context.memory_type(needs.memoryTypeBits, kMappable, 0)
                         : context.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, kMappable);
@@ -51,6 +57,46 @@ Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, b
   }
 }
 
+Buffer::Buffer(Context& context, VkDeviceSize bytes, void* host, std::shared_ptr<const void> owner)
+    : context_(&context), size_(bytes), host_owner_(std::move(owner)) {
+  const VkDeviceSize alignment = context.host_import_alignment();
+  if (alignment == 0 || reinterpret_cast<std::uintptr_t>(host) % alignment != 0)
+    throw Error("internal: host memory the device cannot import");
+  constexpr auto kHandle = VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT;
+  VkExternalMemoryBufferCreateInfo external{VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_BUFFER_CREATE_INFO};
+  external.handleTypes = kHandle;
+  create(kAnyUse, &external);
+  VkDevice device = context.device();
+  try {
+    VkMemoryRequirements needs;
+    vkGetBufferMemoryRequirements(device, buffer_, &needs);
+    auto host_properties = reinterpret_cast<PFN_vkGetMemoryHostPointerPropertiesEXT>(
+        vkGetDeviceProcAddr(device, "vkGetMemoryHostPointerPropertiesEXT"));
+    VkMemoryHostPointerPropertiesEXT pointer{VK_STRUCTURE_TYPE_MEMORY_HOST_POINTER_PROPERTIES_EXT};
+    check(host_properties(device, kHandle, host, &pointer), "vkGetMemoryHostPointerPropertiesEXT");
+    VkImportMemoryHostPointerInfoEXT import{VK_STRUCTURE_TYPE_IMPORT_MEMORY_HOST_POINTER_INFO_EXT};
+    import.handleType = kHandle;
+    import.pHostPointer = host;
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, &import};
+    alloc.allocationSize = (std::max(needs.size, bytes) + alignment - 1) / alignment * alignment;
+    alloc.memoryTypeIndex = context.memory_type(needs.memoryTypeBits & pointer.memoryTypeBits, 0, kMappable);
+    check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
+    check(vkBindBufferMemory(device, buffer_, memory_, 0), "vkBindBufferMemory");
+    mapped_ = host;
+  } catch (...) {
+    if (memory_) vkFreeMemory(device, memory_, nullptr);
+    vkDestroyBuffer(device, buffer_, nullptr);
+    throw;
+  }
+}
+
+Buffer Buffer::import_host(Context& context, void* host, VkDeviceSize bytes, VkDeviceSize texel_bytes,
+                           std::shared_ptr<const void> owner) {
+  Buffer buffer(context, bytes, host, std::move(owner));
+  buffer.texel_bytes_ = texel_bytes;
+  return buffer;
+}
+
 Buffer Buffer::staging(Context& context, VkDeviceSize bytes) {
   return Buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
 }
@@ -62,7 +108,8 @@ Buffer::Buffer(Buffer&& other) noexcept
       memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
       mapped_(std::exchange(other.mapped_, nullptr)),
       texel_bytes_(other.texel_bytes_),
-      texel_view_(std::exchange(other.texel_view_, VK_NULL_HANDLE)) {}
+      texel_view_(std::exchange(other.texel_view_, VK_NULL_HANDLE)),
+      host_owner_(std::move(other.host_owner_)) {}
 
 Buffer::~Buffer() {
   if (texel_view_) vkDestroyBufferView(context_->device(), texel_view_, nullptr);

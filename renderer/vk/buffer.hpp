@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 
 #include <vulkan/vulkan.h>
@@ -54,6 +55,12 @@ class Buffer {
   }
   // A host-visible buffer to fill through mapped() and copy_from into another.
   static Buffer staging(Context& context, VkDeviceSize bytes);
+  // A buffer of `bytes` whose memory is the host's at `host` (VK_EXT_external_memory_host): nothing is
+  // allocated or copied. `host` must be aligned to context.host_import_alignment() (nonzero) and span
+  // `bytes` rounded up to it; `owner` keeps it alive until the buffer is gone. Texels as `of` with
+  // elements of texel_bytes.
+  static Buffer import_host(Context& context, void* host, VkDeviceSize bytes, VkDeviceSize texel_bytes,
+                            std::shared_ptr<const void> owner);
 
   void upload(const void* data, VkDeviceSize bytes, VkDeviceSize offset = 0);
   void download(void* data, VkDeviceSize bytes, VkDeviceSize offset = 0) const;
@@ -72,6 +79,8 @@ class Buffer {
 
  private:
   Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, bool host_visible);
+  Buffer(Context& context, VkDeviceSize bytes, void* host, std::shared_ptr<const void> owner);
+  void create(VkBufferUsageFlags usage, const void* next);
   void copy(VkBuffer from, VkBuffer to, VkDeviceSize bytes, VkDeviceSize from_offset, VkDeviceSize to_offset) const;
 
   Context* context_;
@@ -81,6 +90,7 @@ class Buffer {
   void* mapped_ = nullptr;  // null when the memory is not host-visible
   VkDeviceSize texel_bytes_ = 16;
   mutable VkBufferView texel_view_ = VK_NULL_HANDLE;
+  std::shared_ptr<const void> host_owner_;  // imported memory's owner (import_host), released after it
 };
 
 }  // namespace facet::vk

@@ -1,5 +1,6 @@
 #include "vk/context.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
@@ -48,6 +49,23 @@ DeviceInfo describe(VkPhysicalDevice physical, uint32_t index) {
   info.is_lavapipe = driver.driverID == VK_DRIVER_ID_MESA_LLVMPIPE;
   if (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) info.compute_subgroup_operations = subgroup.supportedOperations;
   return info;
+}
+
+// minImportedHostPointerAlignment when the device has VK_EXT_external_memory_host, else 0.
+VkDeviceSize importable_host_alignment(VkPhysicalDevice physical) {
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, extensions.data());
+  const bool has = std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
+    return std::strcmp(e.extensionName, VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME) == 0;
+  });
+  if (!has) return 0;
+  VkPhysicalDeviceExternalMemoryHostPropertiesEXT host{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_MEMORY_HOST_PROPERTIES_EXT};
+  VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &host};
+  vkGetPhysicalDeviceProperties2(physical, &props);
+  return host.minImportedHostPointerAlignment;
 }
 
 bool layer_available(const char* name) {
@@ -206,6 +224,13 @@ Context::Context(const ContextOptions& options) : validation_(options.validation
     VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     device_info.queueCreateInfoCount = 1;
     device_info.pQueueCreateInfos = &queue;
+    // Host memory imported as buffer memory: the table cache's files are bound where they are mapped.
+    const char* host_import = VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME;
+    host_import_alignment_ = importable_host_alignment(physical_);
+    if (host_import_alignment_ > 0) {
+      device_info.enabledExtensionCount = 1;
+      device_info.ppEnabledExtensionNames = &host_import;
+    }
     check(vkCreateDevice(physical_, &device_info, nullptr, &device_), "vkCreateDevice");
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
 

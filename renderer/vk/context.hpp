@@ -61,6 +61,9 @@ class Context {
   // The pipelines compiled on this device so far (vk/kernel.hpp).
   PipelineCache& pipelines() { return pipelines_; }
   bool validation_enabled() const { return validation_; }
+  // The alignment of host memory the device can import as buffer memory (VK_EXT_external_memory_host:
+  // vk::Buffer::import_host), 0 when it cannot.
+  VkDeviceSize host_import_alignment() const { return host_import_alignment_; }
 
   // Memory type index with all `required` flags (and `preferred` ones if possible).
   uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
@@ -90,6 +93,7 @@ class Context {
   VkPhysicalDeviceMemoryProperties memory_{};
   uint32_t queue_family_ = 0;
   bool has_timestamps_ = false;
+  VkDeviceSize host_import_alignment_ = 0;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   VkCommandPool command_pool_ = VK_NULL_HANDLE;

@@ -166,6 +166,30 @@ TEST(PreintegratedCache, CorruptOrTruncatedFilesAreRebuilt) {
   EXPECT_EQ(fs::file_size(file), size);
 }
 
+// A hit can be bound where the file's mapping holds it (vk::Buffer::import_host): the words lie at a
+// 64 KiB boundary of the file, equal a fresh build's, and a file that is not complete maps to nothing.
+TEST(PreintegratedCache, MappedWordsAreTheTablesAtAnAlignedOffset) {
+  const Inputs in = inputs(kCrossed);
+  const PreintegratedTables fresh = build_preintegrated_tables(in.tables, in.samples, in.domain);
+  CacheFolder folder("mapped");
+  PreintegratedTables header = preintegrated_header(in.tables, in.samples, in.domain, {});
+  EXPECT_FALSE(map_cached_preintegrated_words(folder.path, in.tables, in.samples, in.domain, {}, header));  // none yet
+  EXPECT_FALSE(map_cached_preintegrated_words({}, in.tables, in.samples, in.domain, {}, header));  // no cache
+  ASSERT_EQ(cached_preintegrated_tables(folder.path, in.tables, in.samples, in.domain).use, TableCacheUse::Miss);
+  {
+    const std::optional<MappedTableWords> mapped =
+        map_cached_preintegrated_words(folder.path, in.tables, in.samples, in.domain, {}, header);
+    ASSERT_TRUE(mapped);
+    const auto offset = reinterpret_cast<const std::byte*>(mapped->words.data()) - mapped->file->bytes().data();
+    EXPECT_EQ(offset % 65536, 0);
+    EXPECT_EQ(header.scale, fresh.scale);
+    EXPECT_TRUE(std::equal(mapped->words.begin(), mapped->words.end(), fresh.packed.begin(), fresh.packed.end()));
+  }
+  const fs::path file = folder.only_file();
+  fs::resize_file(file, fs::file_size(file) - 4);  // torn
+  EXPECT_FALSE(map_cached_preintegrated_words(folder.path, in.tables, in.samples, in.domain, {}, header));
+}
+
 TEST(PreintegratedCache, AnUnwritableCacheStillGivesTheTables) {
   const Inputs in = inputs(kCrossed);
   CacheFolder folder("unwritable");

@@ -1,6 +1,8 @@
 // The Vulkan runtime on the test device (lavapipe in CI), with validation on.
 #include <array>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -83,6 +85,34 @@ TEST(VkRuntime, StagingCopyLandsAtTheOffset) {
   buffer.download(back.data(), back.size() * sizeof(float));
   for (int i = 0; i < 300; ++i) EXPECT_EQ(back[i], i >= 50 && i < 250 ? i + 51.0f : 0.0f) << i;
   EXPECT_THROW(buffer.copy_from(staging, 300 * sizeof(float), 200 * sizeof(float)), Error);  // past the source
+}
+
+// Host memory imported as a buffer's memory (the table cache's mapped files): the device reads the
+// host's bytes where they are, and the buffer keeps their owner alive until it is gone.
+TEST(VkRuntime, ImportedHostMemoryIsReadByTheDevice) {
+  auto context = test::make_validated_context();
+  const VkDeviceSize alignment = context->host_import_alignment();
+  if (alignment == 0) GTEST_SKIP() << "the device does not import host memory";
+  const std::size_t count = 3000;  // 12000 bytes: not a multiple of the alignment (the allocation rounds up)
+  const std::size_t span = (count * sizeof(float) + alignment - 1) / alignment * alignment;
+  auto* host = static_cast<float*>(std::aligned_alloc(alignment, span));
+  ASSERT_NE(host, nullptr);
+  std::iota(host, host + count, 0.5f);
+  std::weak_ptr<void> watch;
+  std::vector<float> back(count);
+  {
+    std::shared_ptr<void> owner(host, &std::free);
+    watch = owner;
+    vk::Buffer imported = vk::Buffer::import_host(*context, host, count * sizeof(float), sizeof(float), std::move(owner));
+    EXPECT_EQ(imported.mapped(), host);
+    EXPECT_FALSE(watch.expired());
+    std::vector<float> zeros(count, 0.0f);
+    auto copy = vk::Buffer::from(*context, std::span<const float>(zeros));
+    copy.copy_from(imported, count * sizeof(float), 0);  // on the device
+    copy.download(back.data(), back.size() * sizeof(float));
+  }
+  EXPECT_TRUE(watch.expired());  // released with the buffer
+  for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(back[i], i + 0.5f) << i;
 }
 
 TEST(VkRuntime, KernelAppliesSpecializationAndPushConstants) {
