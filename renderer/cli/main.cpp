@@ -2,13 +2,30 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <string_view>
 
 #include "cli/commands.hpp"
 #include "cli/suggest.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "vk/driver_selection.hpp"
+
+namespace {
+
+// Whether the command will choose its Vulkan device itself (lavapipe by default): every command but
+// `info`, which lists the devices, unless a --device is given.
+bool default_device(int argc, char** argv) {
+  if (argc > 1 && std::string_view(argv[1]) == "info") return false;
+  for (int i = 1; i < argc; ++i)
+    if (std::string_view(argv[i]) == "--device" || std::string_view(argv[i]).starts_with("--device=")) return false;
+  return true;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
+  // Before any thread starts: the loader then loads lavapipe's driver alone (vk/driver_selection.hpp).
+  if (default_device(argc, argv)) facet::vk::select_lavapipe_driver_only();
   CLI::App app{"facet: correct, alias-free pictures of sub-pixel detail, and how wrong a fast answer is"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "facet " FACET_VERSION);

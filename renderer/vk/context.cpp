@@ -8,6 +8,7 @@
 
 #include "common/counted.hpp"
 #include "common/error.hpp"
+#include "vk/driver_selection.hpp"
 
 namespace facet::vk {
 
@@ -113,6 +114,22 @@ std::vector<VkPhysicalDevice> physical_devices(VkInstance instance) {
   return devices;
 }
 
+// An instance with at least one device: when lavapipe's driver was selected alone
+// (driver_selection.hpp) and gives none, the selection is dropped and every driver asked.
+VkInstance instance_with_devices(bool validation, const VkDebugUtilsMessengerCreateInfoEXT* messenger) {
+  if (lavapipe_driver_selected()) {
+    try {
+      VkInstance instance = create_instance(validation, messenger);
+      uint32_t count = 0;
+      if (vkEnumeratePhysicalDevices(instance, &count, nullptr) == VK_SUCCESS && count > 0) return instance;
+      vkDestroyInstance(instance, nullptr);
+    } catch (const Error&) {
+    }
+    select_every_driver();
+  }
+  return create_instance(validation, messenger);
+}
+
 uint32_t choose_device(const std::vector<DeviceInfo>& infos, const std::string& wanted) {
   if (wanted.empty()) {
     for (const auto& info : infos)
@@ -197,7 +214,7 @@ Context::Context(const ContextOptions& options) : validation_(options.validation
                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messenger.pfnUserCallback = &Context::on_validation_message;
   messenger.pUserData = this;
-  instance_ = create_instance(validation_, &messenger);
+  instance_ = instance_with_devices(validation_, &messenger);
   try {
     if (validation_) {
       auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(

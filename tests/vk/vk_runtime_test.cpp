@@ -4,6 +4,7 @@
 #include <cstring>
 #include <memory>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include "scale_add.spv.h"
 #include "support/vulkan_fixture.hpp"
 #include "vk/buffer.hpp"
+#include "vk/driver_selection.hpp"
 #include "vk/kernel.hpp"
 
 namespace facet {
@@ -113,6 +115,34 @@ TEST(VkRuntime, ImportedHostMemoryIsReadByTheDevice) {
   }
   EXPECT_TRUE(watch.expired());  // released with the buffer
   for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(back[i], i + 0.5f) << i;
+}
+
+// With no device named, the loader is given lavapipe's driver alone, unless the user steers its drivers;
+// the device chosen is the one the full list gives by default.
+TEST(VkRuntime, LavapipeDriverAloneWhenNoDeviceIsNamed) {
+  const char* kSteering[] = {"VK_DRIVER_FILES", "VK_ICD_FILENAMES", "VK_ADD_DRIVER_FILES", "VK_LOADER_DRIVERS_SELECT",
+                             "VK_LOADER_DRIVERS_DISABLE"};
+  for (const char* name : kSteering) ASSERT_EQ(std::getenv(name), nullptr) << name << " is set for the tests";
+  bool any_lavapipe = false;
+  for (const auto& d : vk::list_devices()) any_lavapipe |= d.is_lavapipe;
+  if (!any_lavapipe) GTEST_SKIP() << "no lavapipe device";
+  ::setenv("VK_LOADER_DRIVERS_SELECT", "*", 1);  // the user's choice stands
+  vk::select_lavapipe_driver_only();
+  EXPECT_FALSE(vk::lavapipe_driver_selected());
+  EXPECT_EQ(std::getenv("VK_DRIVER_FILES"), nullptr);
+  ::unsetenv("VK_LOADER_DRIVERS_SELECT");
+  vk::select_lavapipe_driver_only();
+  ASSERT_TRUE(vk::lavapipe_driver_selected());
+  ASSERT_NE(std::getenv("VK_DRIVER_FILES"), nullptr);
+  EXPECT_NE(std::string(std::getenv("VK_DRIVER_FILES")).find("lvp_icd"), std::string::npos);
+  {
+    auto context = test::make_validated_context();
+    EXPECT_TRUE(context->info().is_lavapipe);
+    EXPECT_EQ(vk::list_devices().size(), 1u);  // the loader now lists lavapipe alone
+  }
+  vk::select_every_driver();
+  EXPECT_FALSE(vk::lavapipe_driver_selected());
+  EXPECT_EQ(std::getenv("VK_DRIVER_FILES"), nullptr);
 }
 
 TEST(VkRuntime, KernelAppliesSpecializationAndPushConstants) {
