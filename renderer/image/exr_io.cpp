@@ -14,14 +14,18 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTestFile.h>
+#include <OpenEXR/ImfThreading.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <mutex>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -182,6 +186,18 @@ auto read_with(const std::filesystem::path& path, Read read) {
   }
 }
 
+// Threads that compress a file's blocks of rows at once (OpenEXR's pool, made on first use): a frame is
+// written once the device is idle, so every core can deflate (docs/render_speed.md, "Writing a frame").
+int compression_threads() {
+  static std::once_flag made;
+  static int threads = 0;
+  std::call_once(made, [] {
+    threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    Imf::setGlobalThreadCount(threads);
+  });
+  return threads;
+}
+
 }  // namespace
 
 void write_exr(const std::filesystem::path& path, const Image& image, const ExrMetadata& metadata, ExrPixelType type,
@@ -225,7 +241,7 @@ void write_exr(const std::filesystem::path& path, const Image& image, const ExrM
                    Imf::Slice::Make(pixel_type, data, header.dataWindow(), sample_size, sample_size * image.width));
     }
     StdioOStream stream(file);
-    Imf::OutputFile output(stream, header);
+    Imf::OutputFile output(stream, header, compression_threads());
     output.setFrameBuffer(frame);
     output.writePixels(image.height);
   });
