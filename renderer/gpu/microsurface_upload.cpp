@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 
 #include <tbb/parallel_for.h>
@@ -154,7 +155,56 @@ void append_corner_quads(TextureData& data, uint vertex_level, uint corners, uin
   }
 }
 
+// The level-0 texels of the three chains, written in place (width * height each).
+void fill_microsurface_level0(const MicrosurfaceMaterial& material, double z_offset, std::span<vec4> moments,
+                              std::span<vec4> slopes, std::span<vec4> albedos) {
+  const assets::ScalarField& field = *material.heights;
+  const double scale = material.height_scale, inv_delta = 1.0 / material.texel_size;
+  // 2-point Gauss-Legendre on [0, 1] per axis: exact for z^2, which is biquadratic in (u, v).
+  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  // Rows in parallel: 4 + kAlbedoPoints² evaluations and colour-map look-ups per texel.
+  tbb::parallel_for(0, field.height, [&](int j) {
+    for (int i = 0; i < field.width; ++i) {
+      const size_t texel = static_cast<size_t>(j) * field.width + i;
+      const double z00 = scale * field.at(i, j) - z_offset, z10 = scale * field.wrapped(i + 1, j) - z_offset;
+      const double z01 = scale * field.wrapped(i, j + 1) - z_offset,
+                   z11 = scale * field.wrapped(i + 1, j + 1) - z_offset;
+      const Patch p{z00, z10 - z00, z01 - z00, z00 - z10 - z01 + z11};
+      double z2 = 0.0;
+      for (double u : g)
+        for (double v : g) z2 += 0.25 * std::pow(p.z00 + p.b * u + p.c * v + p.e * u * v, 2);
+      // (H2): s_x = (b + e v)/delta depends on v only, s_y = (c + e u)/delta on u only, so over the
+      // patch E[s_x^2] = (b^2 + b e + e^2/3)/delta^2 and E[s_x s_y] = E[s_x] E[s_y].
+      const double sx = (p.b + 0.5 * p.e) * inv_delta, sy = (p.c + 0.5 * p.e) * inv_delta;
+      const double sx2 = (p.b * p.b + p.b * p.e + p.e * p.e / 3.0) * inv_delta * inv_delta;
+      const double sy2 = (p.c * p.c + p.c * p.e + p.e * p.e / 3.0) * inv_delta * inv_delta;
+      moments[texel] = vec4(0.25 * (z00 + z10 + z01 + z11), z2, sx, sy);
+      slopes[texel] = vec4(sx2, sy2, sx * sy, 0.0);
+      glm::dvec3 albedo(0.0);
+      for (int a = 0; a < kAlbedoPoints; ++a)
+        for (int b = 0; b < kAlbedoPoints; ++b) {
+          const double u = (a + 0.5) / kAlbedoPoints, v = (b + 0.5) / kAlbedoPoints;
+          const double z = p.z00 + p.b * u + p.c * v + p.e * u * v + z_offset;
+          const glm::dvec2 s((p.b + p.e * v) * inv_delta, (p.c + p.e * u) * inv_delta);
+          glm::dvec3 c(1.0);
+          if (material.height_colormap) c *= material.height_colormap->at(z);
+          if (material.slope_colormap) c *= material.slope_colormap->at(glm::length(s));
+          albedo += c;
+        }
+      albedos[texel] = vec4(glm::vec3(albedo / double(kAlbedoPoints * kAlbedoPoints)), 0.0f);
+    }
+  });
+}
+
 }  // namespace
+
+std::size_t microsurface_texels(const MicrosurfaceMaterial& material) {
+  const int w = material.heights->width, h = material.heights->height;
+  const std::size_t chain = mip_chain_texels(w, h), vertices = static_cast<std::size_t>(w) * h;
+  // The vertex level, three box-filtered chains, two min-max chains, the corner heights of levels
+  // 1.. and the corner quads of every level (add_microsurface).
+  return vertices + 3 * chain + 2 * std::size_t{heightfield_bound_span(w, h)} + (chain - vertices) + chain;
+}
 
 uint heightfield_bound_span(int width, int height) {
   // Level l then starts at 2A - (2A >> l) and the next at 2A - (2A >> (l + 1)), ceil((2A >> l) / 2)
@@ -186,51 +236,6 @@ HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material
   return cost;
 }
 
-MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, double z_offset) {
-  const assets::ScalarField& field = *material.heights;
-  const double scale = material.height_scale, inv_delta = 1.0 / material.texel_size;
-  // 2-point Gauss-Legendre on [0, 1] per axis: exact for z^2, which is biquadratic in (u, v).
-  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
-  MicrosurfaceLevel0 out;
-  const size_t n = field.values.size();
-  out.moments.resize(n);
-  out.slopes.resize(n);
-  out.albedo.resize(n);
-  // Rows in parallel: 4 + kAlbedoPoints² evaluations and colour-map look-ups per texel.
-  tbb::parallel_for(0, field.height, [&](int j) {
-    for (int i = 0; i < field.width; ++i) {
-      const size_t texel = static_cast<size_t>(j) * field.width + i;
-      const double z00 = scale * field.at(i, j) - z_offset, z10 = scale * field.wrapped(i + 1, j) - z_offset;
-      const double z01 = scale * field.wrapped(i, j + 1) - z_offset,
-                   z11 = scale * field.wrapped(i + 1, j + 1) - z_offset;
-      const Patch p{z00, z10 - z00, z01 - z00, z00 - z10 - z01 + z11};
-      double z2 = 0.0;
-      for (double u : g)
-        for (double v : g) z2 += 0.25 * std::pow(p.z00 + p.b * u + p.c * v + p.e * u * v, 2);
-      // (H2): s_x = (b + e v)/delta depends on v only, s_y = (c + e u)/delta on u only, so over the
-      // patch E[s_x^2] = (b^2 + b e + e^2/3)/delta^2 and E[s_x s_y] = E[s_x] E[s_y].
-      const double sx = (p.b + 0.5 * p.e) * inv_delta, sy = (p.c + 0.5 * p.e) * inv_delta;
-      const double sx2 = (p.b * p.b + p.b * p.e + p.e * p.e / 3.0) * inv_delta * inv_delta;
-      const double sy2 = (p.c * p.c + p.c * p.e + p.e * p.e / 3.0) * inv_delta * inv_delta;
-      out.moments[texel] = vec4(0.25 * (z00 + z10 + z01 + z11), z2, sx, sy);
-      out.slopes[texel] = vec4(sx2, sy2, sx * sy, 0.0);
-      glm::dvec3 albedo(0.0);
-      for (int a = 0; a < kAlbedoPoints; ++a)
-        for (int b = 0; b < kAlbedoPoints; ++b) {
-          const double u = (a + 0.5) / kAlbedoPoints, v = (b + 0.5) / kAlbedoPoints;
-          const double z = p.z00 + p.b * u + p.c * v + p.e * u * v + z_offset;
-          const glm::dvec2 s((p.b + p.e * v) * inv_delta, (p.c + p.e * u) * inv_delta);
-          glm::dvec3 c(1.0);
-          if (material.height_colormap) c *= material.height_colormap->at(z);
-          if (material.slope_colormap) c *= material.slope_colormap->at(glm::length(s));
-          albedo += c;
-        }
-      out.albedo[texel] = vec4(glm::vec3(albedo / double(kAlbedoPoints * kAlbedoPoints)), 0.0f);
-    }
-  });
-  return out;
-}
-
 GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& material) {
   const assets::ScalarField& field = *material.heights;
   // Heights are stored about their mean, so E[z^2] - E[z]^2 does not cancel in float.
@@ -242,10 +247,11 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
   data.levels.push_back({uvec4(data.texels.size(), field.width, field.height, 0)});
   for (double h : field.values)
     data.texels.push_back(vec4(static_cast<float>(material.height_scale * h - z_offset), 0, 0, 0));
-  const MicrosurfaceLevel0 level0 = microsurface_level0(material, z_offset);
-  append_mip_chain(data, field.width, field.height, level0.moments);
-  append_mip_chain(data, field.width, field.height, level0.slopes);
-  append_mip_chain(data, field.width, field.height, level0.albedo);
+  const uint moments = append_mip_chain(data, field.width, field.height);
+  const uint slopes = append_mip_chain(data, field.width, field.height);
+  const uint albedos = append_mip_chain(data, field.width, field.height);
+  fill_microsurface_level0(material, z_offset, level_texels(data, moments), level_texels(data, slopes),
+                           level_texels(data, albedos));
   const uint count = static_cast<uint>(mip_chain_sizes(field.width, field.height).size());
   const uint bounds = append_height_bounds(data, first);
   append_dilated_bounds(data, bounds, count);

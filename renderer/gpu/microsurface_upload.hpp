@@ -16,6 +16,7 @@
 // other, level l at FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after level 0 (unused texels between).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -25,18 +26,15 @@
 
 namespace facet::gpu {
 
-// The level-0 texels of the three chains, in that order, width * height each.
-struct MicrosurfaceLevel0 {
-  std::vector<vec4> moments, slopes, albedo;
-};
-MicrosurfaceLevel0 microsurface_level0(const MicrosurfaceMaterial& material, double z_offset);
-
 // Appends the vertex level, the three chains and the colour maps; returns the material record:
 //   albedo  (specular reflectance rgb, texel size)
 //   kind    (FACET_MATERIAL_MICROSURFACE, 1 if it has a specular lobe, first min-max level, its level count)
 //   params  (alpha_x, alpha_y, z_offset, -)
 //   texture (first level = vertex level, chain level count, height map, slope map (or FACET_NO_COLORMAP))
 GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& material);
+
+// The texels add_microsurface appends, so that the upload can reserve them before it builds them.
+std::size_t microsurface_texels(const MicrosurfaceMaterial& material);
 
 // The texels of one min-max chain over a width x height field: 2A, A = the largest over levels l of
 // the level's texels times 2^l, so that FACET_HEIGHTFIELD_BOUND_LEVEL(2A, l) leaves each level room

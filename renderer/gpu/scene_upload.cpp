@@ -97,6 +97,14 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, bool colorma
   std::vector<GpuSphere> spheres;
   for (const Sphere& s : scene.spheres) spheres.push_back({to_vec4(s.center, s.radius), uvec4(s.material)});
   TextureData textures;
+  // Reserved ahead so that the texels are written once, not copied as the vector grows (a 256^2
+  // microsurface appends 11 MB; filtered:table's tables, built on the way, may still grow it).
+  std::size_t planned_texels = 0;
+  for (const Material& material : scene.materials) {
+    if (const auto* t = std::get_if<ColormapTextureMaterial>(&material)) planned_texels += colormap_texture_texels(*t);
+    if (const auto* m = std::get_if<MicrosurfaceMaterial>(&material)) planned_texels += microsurface_texels(*m);
+  }
+  textures.texels.reserve(planned_texels);
   std::vector<GpuMaterial> materials;
   uint32_t diffraction_index = 0;  // the order of upload_diffraction (gpu/diffraction_upload.hpp)
   for (const Material& material : scene.materials)

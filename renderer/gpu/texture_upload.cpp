@@ -7,28 +7,27 @@
 
 namespace facet::gpu {
 
-namespace {
-
-std::vector<vec4> to_vec4_texels(const std::vector<double>& values, int channels) {
-  std::vector<vec4> texels(values.size() / static_cast<size_t>(channels), vec4(0.0f));
-  for (size_t i = 0; i < texels.size(); ++i)
-    for (int c = 0; c < channels; ++c) texels[i][c] = static_cast<float>(values[i * channels + c]);
+std::size_t mip_chain_texels(int width, int height) {
+  std::size_t texels = 0;
+  for (const glm::uvec2 size : mip_chain_sizes(width, height)) texels += static_cast<std::size_t>(size.x) * size.y;
   return texels;
 }
 
-}  // namespace
-
-uint append_mip_chain(TextureData& data, int width, int height, std::span<const vec4> level0) {
+uint append_mip_chain(TextureData& data, int width, int height) {
   const uint first = static_cast<uint>(data.levels.size());
   const std::vector<glm::uvec2> sizes = mip_chain_sizes(width, height);
   for (uint l = 0; l < sizes.size(); ++l) {
     const glm::uvec2 size = sizes[l];
     data.levels.push_back({uvec4(data.texels.size(), size.x, size.y, l)});
-    data.texels.resize(data.texels.size() + static_cast<size_t>(size.x) * size.y, vec4(0.0f));
+    data.texels.resize(data.texels.size() + static_cast<std::size_t>(size.x) * size.y, vec4(0.0f));
   }
-  std::copy(level0.begin(), level0.end(), data.texels.begin() + data.levels[first].info.x);
   data.gpu_chains.emplace_back(first, sizes.size());
   return first;
+}
+
+std::span<vec4> level_texels(TextureData& data, uint level) {
+  const uvec4 info = data.levels[level].info;
+  return std::span<vec4>(data.texels).subspan(info.x, static_cast<std::size_t>(info.y) * info.z);
 }
 
 double build_gpu_mips(vk::Context& context, const vk::Buffer& texels, const TextureData& data) {
@@ -67,16 +66,19 @@ GpuColormap append_colormap_points(TextureData& data, const Colormap& map) {
 
 uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material, bool with_table) {
   const assets::ScalarField& field = *material.texture;
-  std::vector<double> colours(3 * field.values.size());
-  for (size_t i = 0; i < field.values.size(); ++i) {
-    const glm::dvec3 c = material.colormap.at(field.values[i]);
-    for (int k = 0; k < 3; ++k) colours[3 * i + k] = c[k];
-  }
-  const uint first_moment =
-      append_mip_chain(data, field.width, field.height,
-                       to_vec4_texels(precompute::scalar_moment_level0(field), precompute::kScalarChannels));
+  // Level 0 of each chain is written in place: (E[t], E[t^2], within-texel variance, 0) and the
+  // colour-mapped texel (rgb, 0), in float.
+  const uint first_moment = append_mip_chain(data, field.width, field.height);
   const uint moment_levels = static_cast<uint>(data.levels.size()) - first_moment;
-  const uint first_colour = append_mip_chain(data, field.width, field.height, to_vec4_texels(colours, 3));
+  const std::vector<double> moments = precompute::scalar_moment_level0(field);
+  static_assert(precompute::kScalarChannels == 3);
+  const std::span<vec4> moment_texels = level_texels(data, first_moment);
+  for (std::size_t i = 0; i < moment_texels.size(); ++i)
+    moment_texels[i] = vec4(glm::vec3(glm::dvec3(moments[3 * i], moments[3 * i + 1], moments[3 * i + 2])), 0.0f);
+  const uint first_colour = append_mip_chain(data, field.width, field.height);
+  const std::span<vec4> colour_texels = level_texels(data, first_colour);
+  for (std::size_t i = 0; i < colour_texels.size(); ++i)
+    colour_texels[i] = vec4(glm::vec3(material.colormap.at(field.values[i])), 0.0f);
 
   const Colormap& map = material.colormap;
   GpuColormap gpu_map = append_colormap_points(data, map);
@@ -91,6 +93,10 @@ uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& mat
   }
   data.colormaps.push_back(gpu_map);
   return uvec4(first_moment, moment_levels, first_colour, data.colormaps.size() - 1);
+}
+
+std::size_t colormap_texture_texels(const ColormapTextureMaterial& material) {
+  return 2 * mip_chain_texels(material.texture->width, material.texture->height);
 }
 
 }  // namespace facet::gpu

@@ -24,11 +24,17 @@ struct TextureData {
   std::vector<glm::uvec2> gpu_chains;  // first level record, level count: filled by build_gpu_mips
 };
 
-// Appends a MIP chain of vec4 texels: level 0 (width * height texels, row-major) as given and room
-// for the coarser levels (mip_chain_sizes), which build_gpu_mips box-filters. Level records hold
-// (offset, width, height, index in the chain), as texel_quad (render/texture_sampling.glsl) reads
-// them. Returns the index of its first level record.
-uint append_mip_chain(TextureData& data, int width, int height, std::span<const vec4> level0);
+// The texels of a MIP chain over width x height: its levels' (mip_chain_sizes) in all.
+std::size_t mip_chain_texels(int width, int height);
+
+// Appends a MIP chain of vec4 texels: room for level 0 (width * height texels, row-major, for the
+// caller to fill through level_texels) and the coarser levels (mip_chain_sizes), which build_gpu_mips
+// box-filters. Level records hold (offset, width, height, index in the chain), as texel_quad
+// (render/texture_sampling.glsl) reads them. Returns the index of its first level record.
+uint append_mip_chain(TextureData& data, int width, int height);
+
+// The texels of level record `level` (width * height of them, row-major).
+std::span<vec4> level_texels(TextureData& data, uint level);
 
 // Builds every chain of data.gpu_chains in `texels`, the uploaded data.texels. Returns the GPU ms.
 double build_gpu_mips(vk::Context& context, const vk::Buffer& texels, const TextureData& data);
@@ -53,5 +59,9 @@ GpuColormap append_colormap_points(TextureData& data, const Colormap& map);
 // `with_table`); returns the GpuMaterial::texture field (first moment level, level count, first
 // colour-MIP level, colour map index).
 uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material, bool with_table = false);
+
+// The texels add_colormap_texture appends without a table (the two chains), so that the upload can
+// reserve them before it builds them.
+std::size_t colormap_texture_texels(const ColormapTextureMaterial& material);
 
 }  // namespace facet::gpu

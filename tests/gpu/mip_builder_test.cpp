@@ -44,7 +44,8 @@ TEST(MipBuilder, GpuChainsEqualTheCpuChains) {
     std::vector<gpu::vec4> texels(level0.size() / 4);
     for (size_t i = 0; i < texels.size(); ++i)
       texels[i] = gpu::vec4(level0[4 * i], level0[4 * i + 1], level0[4 * i + 2], level0[4 * i + 3]);
-    firsts.push_back(gpu::append_mip_chain(data, s.width, s.height, texels));
+    firsts.push_back(gpu::append_mip_chain(data, s.width, s.height));
+    std::ranges::copy(texels, gpu::level_texels(data, firsts.back()).begin());
     cpu.push_back(precompute::build_moment_mips(s.width, s.height, 4, std::move(level0)));
   }
   vk::Buffer buffer = vk::Buffer::from(*context, std::span<const gpu::vec4>(data.texels));
@@ -90,7 +91,8 @@ TEST(MipBuilder, ChainsBeyondTheStorageBufferRangeBuild) {
     for (int x = 0; x < kSide; ++x)
       level0[static_cast<size_t>(y) * kSide + x] = gpu::vec4(x, y, x + y, kSide) / float(kSide);
   gpu::TextureData data;
-  const gpu::uint first = gpu::append_mip_chain(data, kSide, kSide, level0);
+  const gpu::uint first = gpu::append_mip_chain(data, kSide, kSide);
+  std::ranges::copy(level0, gpu::level_texels(data, first).begin());
   level0 = {};
   vk::Buffer buffer = vk::Buffer::from(*context, std::span<const gpu::vec4>(data.texels));
   ASSERT_GT(buffer.size(), context->limits().maxStorageBufferRange);
