@@ -37,7 +37,7 @@ uint append_height_bounds(TextureData& data, uint vertex_level) {
   const std::vector<glm::uvec2> sizes = mip_chain_sizes(w, h);
   const uint span = heightfield_bound_span(w, h);
   const size_t base = data.texels.size();
-  data.texels.resize(base + span, vec4(0.0f));
+  data.texels.grow(span);  // the texels between the levels are never read
   for (size_t l = 0; l < sizes.size(); ++l) {
     const uint offset = static_cast<uint>(base + FACET_HEIGHTFIELD_BOUND_LEVEL(span, l));
     data.levels.push_back({uvec4(offset, sizes[l].x, sizes[l].y, l)});
@@ -76,7 +76,7 @@ void append_dilated_bounds(TextureData& data, uint bounds, uint count) {
   const uvec4 level0 = data.levels[bounds].info;
   const uint span = heightfield_bound_span(static_cast<int>(level0.y), static_cast<int>(level0.z));
   const size_t base = data.texels.size();
-  data.texels.resize(base + span, vec4(0.0f));
+  data.texels.grow(span);  // the texels between the levels are never read
   for (uint l = 0; l < count; ++l) {
     const uvec4 info = data.levels[bounds + l].info;
     const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);

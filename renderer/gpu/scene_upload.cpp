@@ -4,6 +4,7 @@
 #include <cstring>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -97,37 +98,55 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, bool colorma
   std::vector<GpuSphere> spheres;
   for (const Sphere& s : scene.spheres) spheres.push_back({to_vec4(s.center, s.radius), uvec4(s.material)});
   TextureData textures;
-  // Reserved ahead so that the texels are written once, not copied as the vector grows (a 256^2
-  // microsurface appends 11 MB; filtered:table's tables, built on the way, may still grow it).
-  std::size_t planned_texels = 0;
-  for (const Material& material : scene.materials) {
-    if (const auto* t = std::get_if<ColormapTextureMaterial>(&material)) planned_texels += colormap_texture_texels(*t);
-    if (const auto* m = std::get_if<MicrosurfaceMaterial>(&material)) planned_texels += microsurface_texels(*m);
-  }
-  textures.texels.reserve(planned_texels);
   std::vector<GpuMaterial> materials;
-  uint32_t diffraction_index = 0;  // the order of upload_diffraction (gpu/diffraction_upload.hpp)
-  for (const Material& material : scene.materials)
-    materials.push_back(std::visit(
-        [&](const auto& m) -> GpuMaterial {
-          using M = std::decay_t<decltype(m)>;
-          if constexpr (std::is_same_v<M, LambertMaterial>)
-            return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_LAMBERT, 0, 0, 0), vec4(0), uvec4(0)};
-          else if constexpr (std::is_same_v<M, MicroflakeMaterial>)
-            return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_MICROFLAKE, static_cast<uint>(m.ndf), 0, 0),
-                    vec4(static_cast<float>(m.param), 0, 0, 0), uvec4(0)};
-          else if constexpr (std::is_same_v<M, DiffractionMaterial>)
-            return {to_vec4(m.base_albedo), uvec4(FACET_MATERIAL_DIFFRACTION, diffraction_index++, 0, 0), vec4(0),
-                    uvec4(0)};
-          else if constexpr (std::is_same_v<M, ColormapTextureMaterial>)
-            return {vec4(1), uvec4(FACET_MATERIAL_COLORMAP_TEXTURE, 0, 0, 0), vec4(0),
-                    add_colormap_texture(textures, m, colormap_tables)};
-          else if constexpr (std::is_same_v<M, MicrosurfaceMaterial>)
-            return add_microsurface(textures, m);
-          else
-            static_assert(sizeof(M) == 0, "every material kind needs its GPU record");
-        },
-        material));
+  const auto add_materials = [&] {
+    uint32_t diffraction_index = 0;  // the order of upload_diffraction (gpu/diffraction_upload.hpp)
+    for (const Material& material : scene.materials)
+      materials.push_back(std::visit(
+          [&](const auto& m) -> GpuMaterial {
+            using M = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<M, LambertMaterial>)
+              return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_LAMBERT, 0, 0, 0), vec4(0), uvec4(0)};
+            else if constexpr (std::is_same_v<M, MicroflakeMaterial>)
+              return {to_vec4(m.albedo), uvec4(FACET_MATERIAL_MICROFLAKE, static_cast<uint>(m.ndf), 0, 0),
+                      vec4(static_cast<float>(m.param), 0, 0, 0), uvec4(0)};
+            else if constexpr (std::is_same_v<M, DiffractionMaterial>)
+              return {to_vec4(m.base_albedo), uvec4(FACET_MATERIAL_DIFFRACTION, diffraction_index++, 0, 0), vec4(0),
+                      uvec4(0)};
+            else if constexpr (std::is_same_v<M, ColormapTextureMaterial>)
+              return {vec4(1), uvec4(FACET_MATERIAL_COLORMAP_TEXTURE, 0, 0, 0), vec4(0),
+                      add_colormap_texture(textures, m, colormap_tables)};
+            else if constexpr (std::is_same_v<M, MicrosurfaceMaterial>)
+              return add_microsurface(textures, m);
+            else
+              static_assert(sizeof(M) == 0, "every material kind needs its GPU record");
+          },
+          material));
+  };
+  // The texels are written once, where the shader reads them: the buffer is made first, at the size
+  // the materials will append (a 256^2 microsurface appends 11 MB), and where its memory is mapped and
+  // host-cached (lavapipe) they are built in it; else in host memory reserved ahead, then uploaded.
+  // filtered:table's tables are sized only as they are built, so with them the buffer comes last.
+  vk::Buffer texels = [&] {
+    if (colormap_tables) {
+      add_materials();
+      return vk::Buffer::from(context, std::span<const vec4>(textures.texels));
+    }
+    std::size_t planned = 0;
+    for (const Material& material : scene.materials) {
+      if (const auto* t = std::get_if<ColormapTextureMaterial>(&material)) planned += colormap_texture_texels(*t);
+      if (const auto* m = std::get_if<MicrosurfaceMaterial>(&material)) planned += microsurface_texels(*m);
+    }
+    vk::Buffer buffer = vk::Buffer::of<vec4>(context, planned);
+    if (buffer.host_cached())
+      textures.texels = TexelStore(std::span<vec4>(static_cast<vec4*>(buffer.mapped()), planned));
+    else
+      textures.texels.reserve(planned);
+    add_materials();
+    if (!textures.texels.in_place() && textures.texels.size() > 0)
+      buffer.upload(textures.texels.data(), sizeof(vec4) * textures.texels.size());
+    return buffer;
+  }();
 
   Bvh bvh = build_bvh(scene.meshes);
   std::vector<GpuBvhNode> nodes(bvh.nodes.size());
@@ -145,7 +164,7 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, bool colorma
       vk::Buffer::from(context, std::span<const GpuTriangle>(triangles)),
       vk::Buffer::from(context, std::span<const GpuMaterial>(materials)),
       vk::Buffer::from(context, std::span<const GpuTextureLevel>(textures.levels)),
-      vk::Buffer::from(context, std::span<const vec4>(textures.texels)),
+      std::move(texels),
       vk::Buffer::from(context, std::span<const GpuColormap>(textures.colormaps)),
       vk::Buffer::from(context, std::span<const vec4>(textures.colormap_points)),
       uvec4(planes.size(), spheres.size(), nodes.size(), triangles.size()),

@@ -19,7 +19,7 @@ uint append_mip_chain(TextureData& data, int width, int height) {
   for (uint l = 0; l < sizes.size(); ++l) {
     const glm::uvec2 size = sizes[l];
     data.levels.push_back({uvec4(data.texels.size(), size.x, size.y, l)});
-    data.texels.resize(data.texels.size() + static_cast<std::size_t>(size.x) * size.y, vec4(0.0f));
+    data.texels.grow(static_cast<std::size_t>(size.x) * size.y);  // level 0 for the caller, the rest for the GPU
   }
   data.gpu_chains.emplace_back(first, sizes.size());
   return first;
@@ -27,7 +27,7 @@ uint append_mip_chain(TextureData& data, int width, int height) {
 
 std::span<vec4> level_texels(TextureData& data, uint level) {
   const uvec4 info = data.levels[level].info;
-  return std::span<vec4>(data.texels).subspan(info.x, static_cast<std::size_t>(info.y) * info.z);
+  return std::span<vec4>(data.texels.data() + info.x, static_cast<std::size_t>(info.y) * info.z);
 }
 
 double build_gpu_mips(vk::Context& context, const vk::Buffer& texels, const TextureData& data) {
@@ -89,7 +89,7 @@ uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& mat
     gpu_map.table_range =
         vec4(grid.mu_min, grid.mu_max, grid.sigma_max, static_cast<float>(colormap_table_sigma_floor(map)));
     const std::vector<glm::vec4> rgba = table.rgba_f32();
-    data.texels.insert(data.texels.end(), rgba.begin(), rgba.end());
+    std::ranges::copy(rgba, data.texels.grow(rgba.size()).begin());
   }
   data.colormaps.push_back(gpu_map);
   return uvec4(first_moment, moment_levels, first_colour, data.colormaps.size() - 1);

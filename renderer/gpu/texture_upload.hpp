@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gpu/scene_layout.hpp"
+#include "gpu/texel_store.hpp"
 #include "precompute/prefiltered_colormap.hpp"
 #include "scene/scene.hpp"
 #include "vk/buffer.hpp"
@@ -18,7 +19,7 @@ namespace facet::gpu {
 
 struct TextureData {
   std::vector<GpuTextureLevel> levels;
-  std::vector<vec4> texels;
+  TexelStore texels;
   std::vector<GpuColormap> colormaps;
   std::vector<vec4> colormap_points;   // linear rgb, position
   std::vector<glm::uvec2> gpu_chains;  // first level record, level count: filled by build_gpu_mips

@@ -48,8 +48,10 @@ Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, b
       vkGetPhysicalDeviceMemoryProperties(context.physical_device(), &memory);
       return memory.memoryTypes[type];
     }();
-    if ((properties.propertyFlags & kMappable) == kMappable)
+    if ((properties.propertyFlags & kMappable) == kMappable) {
       check(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
+      host_cached_ = (properties.propertyFlags & VK_MEMORY_PROPERTY_HOST_CACHED_BIT) != 0;
+    }
   } catch (...) {
     if (memory_) vkFreeMemory(device, memory_, nullptr);
     vkDestroyBuffer(device, buffer_, nullptr);
@@ -107,6 +109,7 @@ Buffer::Buffer(Buffer&& other) noexcept
       buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
       memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
       mapped_(std::exchange(other.mapped_, nullptr)),
+      host_cached_(other.host_cached_),
       texel_bytes_(other.texel_bytes_),
       texel_view_(std::exchange(other.texel_view_, VK_NULL_HANDLE)),
       host_owner_(std::move(other.host_owner_)) {}

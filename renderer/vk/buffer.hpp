@@ -69,6 +69,9 @@ class Buffer {
   // The buffer's memory, mapped on the host: write to it directly instead of uploading a copy. Null
   // when the memory is not host-visible.
   void* mapped() const { return mapped_; }
+  // Whether the mapped memory is also host-cached: reading it back costs what host memory does (not
+  // so for write-combined memory).
+  bool host_cached() const { return host_cached_; }
 
   VkBuffer handle() const { return buffer_; }
   // A view of the whole buffer as texels of texel_bytes() (R32UI, RG32UI or RGBA32UI; made on first use,
@@ -88,6 +91,7 @@ class Buffer {
   VkBuffer buffer_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   void* mapped_ = nullptr;  // null when the memory is not host-visible
+  bool host_cached_ = false;
   VkDeviceSize texel_bytes_ = 16;
   mutable VkBufferView texel_view_ = VK_NULL_HANDLE;
   std::shared_ptr<const void> host_owner_;  // imported memory's owner (import_host), released after it
