@@ -78,8 +78,9 @@ class OctaveGradients {
   }
   Gradient operator()(long long i, long long j) const {
     if (table_.empty()) return lattice_gradient(p_, k_, frequency_, i, j);
-    // Texel centres lie in (0, 1), so i, j are in [0, f]; f wraps to 0.
-    return table_[static_cast<std::size_t>((j % frequency_) * frequency_ + i % frequency_)];
+    // Texel centres lie in (0, 1), so i, j are in [0, f]; f wraps to 0 (a compare, not a division).
+    const auto wrap = [this](long long v) { return v == frequency_ ? 0 : v; };
+    return table_[static_cast<std::size_t>(wrap(j) * frequency_ + wrap(i))];
   }
 
  private:

@@ -5,6 +5,8 @@
 // level is the plain mean over the level-0 texels it covers.
 #pragma once
 
+#include <array>
+
 #include <cstddef>
 #include <vector>
 
@@ -39,8 +41,10 @@ MomentMips build_moment_mips(int width, int height, int channels, std::vector<do
 // variance of the bilinear reconstruction of t over the texel's own cell (centre +- half a texel).
 enum ScalarMomentChannel { kScalarMean = 0, kScalarSecondMoment = 1, kScalarWithinVariance = 2, kScalarChannels = 3 };
 MomentMips scalar_moment_mips(const assets::ScalarField& field);
-// Level 0 of scalar_moment_mips alone (kScalarChannels values per texel), e.g. for a GPU-built chain.
+// Level 0 of scalar_moment_mips alone (kScalarChannels values per texel).
 std::vector<double> scalar_moment_level0(const assets::ScalarField& field);
+// One texel of it, texel (x, y): what a GPU-built chain writes in place (gpu/texture_upload.cpp).
+std::array<double, kScalarChannels> scalar_moment_texel(const assets::ScalarField& field, int x, int y);
 
 // Channels of lean_moment_mips: h, h^2, s_x, s_y, s_x^2, s_y^2, s_x s_y with the slopes by central
 // differences, s_x = (h[x+1] - h[x-1]) / (2 texel_size) (the slope of the bilinear surface at the texel
