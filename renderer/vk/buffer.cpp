@@ -85,6 +85,7 @@ Buffer::Buffer(Context& context, VkDeviceSize bytes, void* host, std::shared_ptr
     check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
     check(vkBindBufferMemory(device, buffer_, memory_, 0), "vkBindBufferMemory");
     mapped_ = host;
+    host_cached_ = true;  // the host's own memory
   } catch (...) {
     if (memory_) vkFreeMemory(device, memory_, nullptr);
     vkDestroyBuffer(device, buffer_, nullptr);
