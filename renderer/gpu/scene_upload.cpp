@@ -128,14 +128,15 @@ SceneBuffers upload_scene(vk::Context& context, const Scene& scene, bool colorma
   // host-cached (lavapipe) they are built in it; else in host memory reserved ahead, then uploaded.
   // filtered:table's tables are sized only as they are built, so with them the buffer comes last.
   vk::Buffer texels = [&] {
-    if (colormap_tables) {
-      add_materials();
-      return vk::Buffer::from(context, std::span<const vec4>(textures.texels));
-    }
     std::size_t planned = 0;
     for (const Material& material : scene.materials) {
       if (const auto* t = std::get_if<ColormapTextureMaterial>(&material)) planned += colormap_texture_texels(*t);
       if (const auto* m = std::get_if<MicrosurfaceMaterial>(&material)) planned += microsurface_texels(*m);
+    }
+    if (colormap_tables) {
+      textures.texels.reserve(planned);  // the tables, built on the way, may still grow it
+      add_materials();
+      return vk::Buffer::from(context, std::span<const vec4>(textures.texels));
     }
     vk::Buffer buffer = vk::Buffer::of<vec4>(context, planned);
     if (buffer.host_cached())
