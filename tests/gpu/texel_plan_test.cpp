@@ -11,7 +11,7 @@
 #include "scene/colormap.hpp"
 
 namespace facet {
-namespace {
+namespace texel_plan_test {  // named: the unity build joins this file with others
 
 std::shared_ptr<const assets::ScalarField> random_field(int width, int height, unsigned seed) {
   auto field = std::make_shared<assets::ScalarField>();
@@ -54,5 +54,5 @@ TEST(TexelPlan, ColormapTexturesAppendThePlannedTexels) {
   }
 }
 
-}  // namespace
+}  // namespace texel_plan_test
 }  // namespace facet
