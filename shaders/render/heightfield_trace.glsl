@@ -117,11 +117,10 @@ vec4 heightfield_extent(HeightField f, int level, ivec2 node, ivec2 tile) {
 // corner quads (record `info`; microsurface_upload.hpp).
 vec4 heightfield_node_corners(uvec4 info, ivec2 n) { return texel_at(info.x + uint(n.y) * info.y + uint(n.x)); }
 
-// The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e):
-// the leaf level's corners blended with the next level's surface at the same points (a bilinear
-// patch of the parent node, so the blend is bilinear over n and continuous across nodes).
-vec4 heightfield_leaf_corners(HeightField f, int level, ivec2 n, ivec2 tile, vec4 e) {
-  vec4 z = heightfield_node_corners(f.leaf_corners, n);
+// The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e),
+// given z, the leaf level's own corners of n: those blended with the next level's surface at the same
+// points (a bilinear patch of the parent node, so the blend is bilinear over n and continuous across nodes).
+vec4 heightfield_leaf_corners(HeightField f, int level, ivec2 n, ivec2 tile, vec4 e, vec4 z) {
   if (f.blend <= 0.0) return z;
   vec4 pe = heightfield_extent(f, level + 1, n >> 1, tile);
   vec4 pz = heightfield_node_corners(f.parent_corners, n >> 1);
@@ -204,19 +203,20 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     float t_exit = min(min(exit_x, exit_y), t_end);
     ivec2 nodes = heightfield_nodes_per_tile(f, min(level, f.top));
     bool leaf = level == f.leaf;
-    vec4 corners = vec4(0.0);
-    vec2 z;
     // A leaf is bounded by its own corners: a smoothed leaf lies between them and may pass the dilated
-    // bounds; a cell's min-max bound is their extremes (microsurface_upload). So each step loads a
-    // leaf's corners once, for the bound and the cell test (lavapipe runs both branches when its 8
-    // lanes disagree, and a second copy of the loads when a lane tests a cell).
+    // bounds; a cell's min-max bound is their extremes (microsurface_upload). A leaf's corners and a
+    // node's bound are each one texel, so a step makes one load at the address its lane needs: lavapipe
+    // runs both sides of a branch its 8 lanes disagree on, which cost groups of leaf and node lanes two.
+    uint address = leaf ? f.leaf_corners.x + uint(node.y) * f.leaf_corners.y + uint(node.x)
+                        : f.bound_base + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, min(level, f.top)) +
+                              uint(node.y * nodes.x + node.x);
+    vec4 texel = texel_at(address);
+    vec4 corners = vec4(0.0);
+    vec2 z = texel.xy;
     if (leaf) {
-      corners = heightfield_leaf_corners(f, level, node, tile, e);
+      corners = heightfield_leaf_corners(f, level, node, tile, e, texel);
       z = vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
                max(max(corners.x, corners.y), max(corners.z, corners.w)));
-    } else {
-      uint first = f.bound_base + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, min(level, f.top));
-      z = texel_at(first + uint(node.y * nodes.x + node.x)).xy;
     }
     vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
     float t_in = max(t, tz.x);
