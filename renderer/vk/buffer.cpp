@@ -10,87 +10,80 @@
 namespace facet::vk {
 
 namespace {
-constexpr VkBufferUsageFlags kAnyUse = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
-                                       VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
-                                       VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+constexpr VkBufferUsageFlags kAnyUse =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+    VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 constexpr VkMemoryPropertyFlags kMappable = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
 }  // namespace
 
+// Host allocations imported as buffer memory (import_host).
+constexpr VkExternalMemoryBufferCreateInfo kHostAllocation{VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_BUFFER_CREATE_INFO,
+                                                           nullptr,
+                                                           VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT};
+
 Buffer::Buffer(Context& context, VkDeviceSize bytes) : Buffer(context, bytes, kAnyUse, false) {}
 
-void Buffer::create(VkBufferUsageFlags usage, const void* next) {
-  if (size_ == 0) throw Error("internal: a Vulkan buffer of 0 bytes was requested");
-  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, next};
-  info.size = size_;
+Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage,
+               const VkExternalMemoryBufferCreateInfo* external)
+    : context_(&context), size_(bytes) {
+  if (bytes == 0) throw Error("internal: a Vulkan buffer of 0 bytes was requested");
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, external};
+  info.size = bytes;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  check(vkCreateBuffer(context_->device(), &info, nullptr, &buffer_), "vkCreateBuffer");
+  check(vkCreateBuffer(context.device(), &info, nullptr, &buffer_), "vkCreateBuffer");
 }
 
+void Buffer::bind(const VkMemoryAllocateInfo& allocation) {
+  check(vkAllocateMemory(context_->device(), &allocation, nullptr, &memory_), "vkAllocateMemory");
+  check(vkBindBufferMemory(context_->device(), buffer_, memory_, 0), "vkBindBufferMemory");
+}
+
+// The constructors below delegate the VkBuffer's creation: once that constructor has returned, the
+// object is constructed, so if they throw, the destructor frees whatever they made.
 Buffer::Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, bool host_visible)
-    : context_(&context), size_(bytes) {
-  create(usage, nullptr);
-  VkDevice device = context.device();
-  try {
-    VkMemoryRequirements needs;
-    vkGetBufferMemoryRequirements(device, buffer_, &needs);
-    uint32_t type = host_visible
-                        ? context.memory_type(needs.memoryTypeBits, kMappable, 0)
-                        : context.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, kMappable);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = needs.size;
-    alloc.memoryTypeIndex = type;
-    check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
-    check(vkBindBufferMemory(device, buffer_, memory_, 0), "vkBindBufferMemory");
-    VkMemoryType properties = [&] {
-      VkPhysicalDeviceMemoryProperties memory;
-      vkGetPhysicalDeviceMemoryProperties(context.physical_device(), &memory);
-      return memory.memoryTypes[type];
-    }();
-    if ((properties.propertyFlags & kMappable) == kMappable) {
-      check(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
-      host_cached_ = (properties.propertyFlags & VK_MEMORY_PROPERTY_HOST_CACHED_BIT) != 0;
-    }
-  } catch (...) {
-    if (memory_) vkFreeMemory(device, memory_, nullptr);
-    vkDestroyBuffer(device, buffer_, nullptr);
-    throw;
+    : Buffer(context, bytes, usage, nullptr) {
+  VkMemoryRequirements needs;
+  vkGetBufferMemoryRequirements(context.device(), buffer_, &needs);
+  const uint32_t type = host_visible
+                            ? context.memory_type(needs.memoryTypeBits, kMappable, 0)
+                            : context.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, kMappable);
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = needs.size;
+  alloc.memoryTypeIndex = type;
+  bind(alloc);
+  VkPhysicalDeviceMemoryProperties memory;
+  vkGetPhysicalDeviceMemoryProperties(context.physical_device(), &memory);
+  const VkMemoryPropertyFlags properties = memory.memoryTypes[type].propertyFlags;
+  if ((properties & kMappable) == kMappable) {
+    check(vkMapMemory(context.device(), memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
+    host_cached_ = (properties & VK_MEMORY_PROPERTY_HOST_CACHED_BIT) != 0;
   }
 }
 
 Buffer::Buffer(Context& context, VkDeviceSize bytes, void* host, std::shared_ptr<const void> owner)
-    : context_(&context), size_(bytes), host_owner_(std::move(owner)) {
+    : Buffer(context, bytes, kAnyUse, &kHostAllocation) {
+  host_owner_ = std::move(owner);
   const VkDeviceSize alignment = context.host_import_alignment();
   if (alignment == 0 || reinterpret_cast<std::uintptr_t>(host) % alignment != 0)
     throw Error("internal: host memory the device cannot import");
-  constexpr auto kHandle = VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT;
-  VkExternalMemoryBufferCreateInfo external{VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_BUFFER_CREATE_INFO};
-  external.handleTypes = kHandle;
-  create(kAnyUse, &external);
   VkDevice device = context.device();
-  try {
-    VkMemoryRequirements needs;
-    vkGetBufferMemoryRequirements(device, buffer_, &needs);
-    auto host_properties = reinterpret_cast<PFN_vkGetMemoryHostPointerPropertiesEXT>(
-        vkGetDeviceProcAddr(device, "vkGetMemoryHostPointerPropertiesEXT"));
-    VkMemoryHostPointerPropertiesEXT pointer{VK_STRUCTURE_TYPE_MEMORY_HOST_POINTER_PROPERTIES_EXT};
-    check(host_properties(device, kHandle, host, &pointer), "vkGetMemoryHostPointerPropertiesEXT");
-    VkImportMemoryHostPointerInfoEXT import{VK_STRUCTURE_TYPE_IMPORT_MEMORY_HOST_POINTER_INFO_EXT};
-    import.handleType = kHandle;
-    import.pHostPointer = host;
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, &import};
-    alloc.allocationSize = (std::max(needs.size, bytes) + alignment - 1) / alignment * alignment;
-    alloc.memoryTypeIndex = context.memory_type(needs.memoryTypeBits & pointer.memoryTypeBits, 0, kMappable);
-    check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
-    check(vkBindBufferMemory(device, buffer_, memory_, 0), "vkBindBufferMemory");
-    mapped_ = host;
-    host_cached_ = true;  // the host's own memory
-  } catch (...) {
-    if (memory_) vkFreeMemory(device, memory_, nullptr);
-    vkDestroyBuffer(device, buffer_, nullptr);
-    throw;
-  }
+  VkMemoryRequirements needs;
+  vkGetBufferMemoryRequirements(device, buffer_, &needs);
+  auto host_properties = reinterpret_cast<PFN_vkGetMemoryHostPointerPropertiesEXT>(
+      vkGetDeviceProcAddr(device, "vkGetMemoryHostPointerPropertiesEXT"));
+  VkMemoryHostPointerPropertiesEXT pointer{VK_STRUCTURE_TYPE_MEMORY_HOST_POINTER_PROPERTIES_EXT};
+  check(host_properties(device, VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT, host, &pointer),
+        "vkGetMemoryHostPointerPropertiesEXT");
+  VkImportMemoryHostPointerInfoEXT import{VK_STRUCTURE_TYPE_IMPORT_MEMORY_HOST_POINTER_INFO_EXT};
+  import.handleType = VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT;
+  import.pHostPointer = host;
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, &import};
+  alloc.allocationSize = (std::max(needs.size, bytes) + alignment - 1) / alignment * alignment;
+  alloc.memoryTypeIndex = context.memory_type(needs.memoryTypeBits & pointer.memoryTypeBits, 0, kMappable);
+  bind(alloc);
+  mapped_ = host;
+  host_cached_ = true;  // the host's own memory
 }
 
 Buffer Buffer::import_host(Context& context, void* host, VkDeviceSize bytes, VkDeviceSize texel_bytes,

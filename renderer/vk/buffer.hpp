@@ -81,9 +81,12 @@ class Buffer {
   VkDeviceSize size() const { return size_; }
 
  private:
+  // The VkBuffer alone (no memory yet), `external` chained to its creation if not null.
+  Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage,
+         const VkExternalMemoryBufferCreateInfo* external);
   Buffer(Context& context, VkDeviceSize bytes, VkBufferUsageFlags usage, bool host_visible);
   Buffer(Context& context, VkDeviceSize bytes, void* host, std::shared_ptr<const void> owner);
-  void create(VkBufferUsageFlags usage, const void* next);
+  void bind(const VkMemoryAllocateInfo& allocation);  // allocates memory_ and binds it to buffer_
   void copy(VkBuffer from, VkBuffer to, VkDeviceSize bytes, VkDeviceSize from_offset, VkDeviceSize to_offset) const;
 
   Context* context_;
