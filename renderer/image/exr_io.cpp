@@ -20,7 +20,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <mutex>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
@@ -189,12 +188,11 @@ auto read_with(const std::filesystem::path& path, Read read) {
 // Threads that compress a file's blocks of rows at once (OpenEXR's pool, made on first use): a frame is
 // written once the device is idle, so every core can deflate (docs/render_speed.md, "Writing a frame").
 int compression_threads() {
-  static std::once_flag made;
-  static int threads = 0;
-  std::call_once(made, [] {
-    threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    Imf::setGlobalThreadCount(threads);
-  });
+  static const int threads = [] {
+    const int count = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    Imf::setGlobalThreadCount(count);
+    return count;
+  }();
   return threads;
 }
 
