@@ -11,8 +11,8 @@
 #include <optional>
 #include <string_view>
 #include <tuple>
-#include <utility>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "common/content_hash.hpp"
@@ -107,11 +107,11 @@ void write_tables(std::FILE* out, const PreintegratedTables& t, std::span<const 
   const std::string prefix = std::string(kFormat) + key;
   const std::string_view packed(reinterpret_cast<const char*>(words.data()), words.size_bytes());
   const std::string zeros(words_offset(h.scales) - prefix.size() - sizeof(h) - h.scales * sizeof(float), '\0');
-  Checksum sum;  // over the same parts read_tables reads, as the tail of each is padded
-  for (std::string_view part : {std::string_view(prefix), bytes_of(h), bytes_of(t.scale), std::string_view(zeros), packed}) {
-    if (part.data() != zeros.data()) sum.add(part);
+  for (std::string_view part :
+       {std::string_view(prefix), bytes_of(h), bytes_of(t.scale), std::string_view(zeros), packed})
     if (std::fwrite(part.data(), 1, part.size(), out) != part.size()) throw Error("short write");
-  }
+  Checksum sum;  // over the parts map_tables checks, each part's tail padded as there
+  for (std::string_view part : {std::string_view(prefix), bytes_of(h), bytes_of(t.scale), packed}) sum.add(part);
   const std::uint64_t value = sum.value();
   if (std::fwrite(&value, sizeof(value), 1, out) != 1) throw Error("short write");
 }
@@ -138,8 +138,7 @@ std::optional<MappedTableWords> map_tables(const std::filesystem::path& file, co
   if (stored != sum.value()) return std::nullopt;
   t.scale.resize(expected.scales);
   std::memcpy(t.scale.data(), scales.data(), scales.size());
-  return MappedTableWords{std::move(mapped),
-                          {reinterpret_cast<const std::uint32_t*>(words.data()), expected.packed}};
+  return MappedTableWords{std::move(mapped), {reinterpret_cast<const std::uint32_t*>(words.data()), expected.packed}};
 }
 
 }  // namespace
@@ -243,12 +242,9 @@ std::optional<MappedTableWords> map_and_refresh(const std::filesystem::path& fil
 
 }  // namespace
 
-std::optional<MappedTableWords> map_cached_preintegrated_words(const std::filesystem::path& cache_dir,
-                                                               const SpectralTables& tables,
-                                                               const WavelengthSamples& samples,
-                                                               const PreintegratedDomain& domain,
-                                                               const PreintegrationSettings& settings,
-                                                               PreintegratedTables& header) {
+std::optional<MappedTableWords> map_cached_preintegrated_words(
+    const std::filesystem::path& cache_dir, const SpectralTables& tables, const WavelengthSamples& samples,
+    const PreintegratedDomain& domain, const PreintegrationSettings& settings, PreintegratedTables& header) {
   if (cache_dir.empty()) return std::nullopt;
   const auto [file, key] = table_file(cache_dir, tables, samples, domain, settings);
   return map_and_refresh(file, key, header);

@@ -96,13 +96,8 @@ std::optional<vk::Buffer> import_cached_words(vk::Context& context, FastPathData
   const VkDeviceSize alignment = context.host_import_alignment();
   if (alignment == 0 || data.preintegrated.size() != 1 || slices.ranges.size() != 1) return std::nullopt;
   PendingTables& p = data.preintegrated.front();
-  std::optional<diffraction::MappedTableWords> mapped;
-  try {
-    mapped = diffraction::map_cached_preintegrated_words(table_cache, p.prepared->tables, p.prepared->samples,
-                                                         p.domain, p.settings, p.header);
-  } catch (const Error& e) {
-    throw Error("diffraction material '" + p.material + "': " + e.what());
-  }
+  std::optional<diffraction::MappedTableWords> mapped = diffraction::map_cached_preintegrated_words(
+      table_cache, p.prepared->tables, p.prepared->samples, p.domain, p.settings, p.header);
   if (!mapped) return std::nullopt;
   auto* words = const_cast<std::uint32_t*>(mapped->words.data());  // copy-on-write: the device only reads
   const auto* end = reinterpret_cast<const std::byte*>(mapped->file->data()) + mapped->file->mapped_bytes();
