@@ -66,8 +66,11 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
         rgb = spectral_xyz_to_linear_srgb(diffraction_orders_xyz(lattice, m.table, m.offsets.x, observer, d.wi, d.wr));
         break;
       }
-      rgb = spectral_xyz_to_linear_srgb(diffraction_spectral_xyz(m, d.wi, d.wr));
-      break;
+      // Not restricted: on to the spectral path, one call site of it for both methods (each call site of
+      // an inlined function is compiled on its own).
+#if !FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_SPECTRAL)
+#error "a variant with the orders path needs the spectral path, its fallback"
+#endif
 #endif
 #if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_SPECTRAL)
     case kDiffractionSpectral:
