@@ -1,6 +1,4 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
-#extension GL_KHR_shader_subgroup_vote : require
 // The direct pass for scenes without traced height fields (render/direct_pass.glsl).
 #include "render/direct_pass.glsl"

@@ -1,7 +1,5 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
-#extension GL_KHR_shader_subgroup_vote : require
 // The direct pass for scenes whose microsurfaces' height fields are traced (render/direct_pass.glsl).
 #define FACET_HEIGHT_FIELDS
 #include "render/direct_pass.glsl"

@@ -32,14 +32,10 @@ std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod
   return method.counts_work ? instrument_work_counts(program) : std::vector<uint32_t>(program.begin(), program.end());
 }
 
-// The scene, once the pass is known to run it on this device, checked before it uploads or compiles
-// anything: the program's colour maps walk their points across a subgroup (render/texture_sampling.glsl),
-// and no height field's traversal may pass the shader's loop bound (render/heightfield_trace.glsl;
-// lavapipe would cut the loop short without a word). Each refusal is one line.
-const Scene& runnable(const vk::Context& context, const Scene& scene, const RenderMethod& method) {
-  vk::require_compute_subgroup_operations(
-      context.info(), VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT,
-      "the render pass");
+// The scene, checked before the pass uploads or compiles anything: no height field's traversal may pass
+// the shader's loop bound (render/heightfield_trace.glsl; lavapipe would cut the loop short without a
+// word). The refusal is one line.
+const Scene& runnable(const Scene& scene, const RenderMethod& method) {
   if (!traces_height_fields(scene, method)) return scene;
   std::int64_t nodes = 0;
   for (const Plane& plane : scene.planes) {
@@ -126,7 +122,7 @@ int tile_count(int width, int height, int tile_size) {
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
                        PhaseTimings* timings)
     : DirectPass(context, scene, method, tile_size, timings, timed(timings, "diffraction", [&] {
-                   return plan_diffraction(context, runnable(context, scene, method), method.diffraction);
+                   return plan_diffraction(context, runnable(scene, method), method.diffraction);
                  })) {}
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,

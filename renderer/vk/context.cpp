@@ -37,8 +37,7 @@ std::string version_string(uint32_t v) {
 }
 
 DeviceInfo describe(VkPhysicalDevice physical, uint32_t index) {
-  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES, &subgroup};
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
   vkGetPhysicalDeviceProperties2(physical, &props);
   DeviceInfo info;
@@ -48,7 +47,6 @@ DeviceInfo describe(VkPhysicalDevice physical, uint32_t index) {
   info.api_version = version_string(props.properties.apiVersion);
   info.driver = std::string(driver.driverName) + " " + driver.driverInfo;
   info.is_lavapipe = driver.driverID == VK_DRIVER_ID_MESA_LLVMPIPE;
-  if (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) info.compute_subgroup_operations = subgroup.supportedOperations;
   return info;
 }
 
@@ -352,21 +350,6 @@ double Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& reco
                               VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
         "vkGetQueryPoolResults");
   return static_cast<double>(ticks[1] - ticks[0]) * limits_.timestampPeriod * 1e-6;
-}
-
-void require_compute_subgroup_operations(const DeviceInfo& device, VkSubgroupFeatureFlags needed,
-                                         const std::string& user) {
-  const VkSubgroupFeatureFlags missing = needed & ~device.compute_subgroup_operations;
-  if (missing == 0) return;
-  std::string names;
-  const std::pair<VkSubgroupFeatureFlagBits, const char*> kinds[] = {
-      {VK_SUBGROUP_FEATURE_BASIC_BIT, "basic"},         {VK_SUBGROUP_FEATURE_VOTE_BIT, "vote"},
-      {VK_SUBGROUP_FEATURE_ARITHMETIC_BIT, "arithmetic"}, {VK_SUBGROUP_FEATURE_BALLOT_BIT, "ballot"},
-      {VK_SUBGROUP_FEATURE_SHUFFLE_BIT, "shuffle"}};
-  for (const auto& [bit, name] : kinds)
-    if (missing & bit) names += (names.empty() ? "" : ", ") + std::string(name);
-  throw Error("the Vulkan device " + device.name + " lacks subgroup operations in compute shaders (" + names +
-              ") that " + user + " needs");
 }
 
 }  // namespace facet::vk

@@ -26,13 +26,7 @@ struct DeviceInfo {
   std::string api_version;
   std::string driver;
   bool is_lavapipe = false;
-  VkSubgroupFeatureFlags compute_subgroup_operations = 0;  // what compute shaders may do across a subgroup
 };
-
-// Refuses, in one line naming the device and `user`, a device whose compute shaders lack any of the
-// subgroup operations `needed` (VK_SUBGROUP_FEATURE_*_BIT).
-void require_compute_subgroup_operations(const DeviceInfo& device, VkSubgroupFeatureFlags needed,
-                                         const std::string& user);
 
 struct ContextOptions {
   std::string device;  // empty: lavapipe if present, else device 0

@@ -153,24 +153,22 @@ vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
 // E[colormap(t)] for t ~ N(mu, sigma^2) of a step map (eq. K1 of docs/colormap_filtering.md): the map is
 // its first colour plus a jump J_k = c_k - c_{k-1} at each later point x_k, so
 //   E[c(t)] = c_first + sum_k J_k Phi((m - x_k)/s),
-// one coarse normal tail per point. The lanes of a subgroup walk the union of their maps' points together
-// (subgroup-uniform index: one load per point, no per-lane binary search, whose loops and gathers cost
-// twice the sum itself in lavapipe), a lane adding only its own map's jumps (none for a linear map, `steps`
-// false), and stop once every lane's remaining points lie beyond kColormapReach s above its mean.
+// one coarse normal tail per point. Each lane walks its own map's points upwards (none for a linear map,
+// `steps` false) and stops at the first beyond kColormapReach s above its mean: no per-lane binary search,
+// whose loops and gathers cost twice the sum itself in lavapipe, and no subgroup vote or reduction, which
+// lavapipe 22.3 runs lane by lane (a walk of the subgroup's union of points, stopped by subgroupAll, took
+// 1.4x this one's device time on colormap_noise_plane; docs/render_speed.md).
 vec3 colormap_steps_filtered(GpuColormap map, float m, float s, bool steps) {
-  uint first = map.info.x, last = map.info.x + map.info.y - 1u;
-  uint lo = subgroupMin(steps ? first : ~0u), hi = subgroupMax(steps ? last : 0u);
-  vec3 mean = colormap_point(first).rgb;
-  vec3 before = colormap_point(lo <= hi ? lo : first).rgb;
-  for (uint k = lo; k < hi;) {
-    ++k;
+  uint first = map.info.x, last = steps ? map.info.x + map.info.y - 1u : first;
+  vec3 before = colormap_point(first).rgb;
+  vec3 mean = before;
+  for (uint k = first + 1u; k <= last; ++k) {
     vec4 p = colormap_point(k);
     float z = colormap_standardize(p.w, m, s);
-    if (subgroupAll(!steps || k > last || (k >= first && z > kColormapReach))) break;
+    if (z > kColormapReach) break;
     float x = abs(z);
     float tail = sf_normal_tail_coarse(x, exp(-0.5 * min(x * x, 1e30)));
-    bool own = steps && k > first && k <= last;
-    mean += own ? (z > 0.0 ? tail : 1.0 - tail) * (p.rgb - before) : vec3(0.0);
+    mean += (z > 0.0 ? tail : 1.0 - tail) * (p.rgb - before);
     before = p.rgb;
   }
   return mean;

@@ -32,28 +32,6 @@ TEST(VkRuntime, ListsAtLeastOneDeviceAndPicksLavapipeByDefault) {
   EXPECT_TRUE(context->validation_enabled());
 }
 
-TEST(VkRuntime, MissingSubgroupOperationsAreRefusedInOneLine) {
-  // The device in use reports what its compute shaders can do across a subgroup (lavapipe: everything the
-  // render pass asks for), and a device lacking some is refused naming the device and what is missing.
-  auto context = test::make_validated_context();
-  if (context->info().is_lavapipe) {
-    EXPECT_NO_THROW(vk::require_compute_subgroup_operations(
-        context->info(), VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT, "the test"));
-  }
-  vk::DeviceInfo basic_only;
-  basic_only.name = "OldGPU";
-  basic_only.compute_subgroup_operations = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT;
-  try {
-    vk::require_compute_subgroup_operations(basic_only, VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT,
-                                            "the render pass");
-    ADD_FAILURE() << "a device without subgroup arithmetic was accepted";
-  } catch (const Error& e) {
-    EXPECT_STREQ(e.what(),
-                 "the Vulkan device OldGPU lacks subgroup operations in compute shaders (arithmetic) that the render "
-                 "pass needs");
-  }
-}
-
 TEST(VkRuntime, UnknownDeviceIsAClearError) {
   vk::ContextOptions options;
   options.device = "no-such-gpu-anywhere";
