@@ -62,6 +62,21 @@ bool uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
   return false;
 }
 
+// Whether every MIP chain the pass looks up bilinearly (colour-mapped textures, a microsurface's box-filtered
+// chains) has whole texels on every level: level-0 sizes that are powers of two (mip_chain_sizes halves
+// them to 1 x 1), so the shader may take lib/mip_grid.glsl's shortcut.
+bool mip_texels_are_whole(const Scene& scene) {
+  const auto power_of_two = [](int n) { return n > 0 && (n & (n - 1)) == 0; };
+  const auto whole = [&](const assets::ScalarField& field) {
+    return power_of_two(field.width) && power_of_two(field.height);
+  };
+  for (const Material& m : scene.materials) {
+    if (const auto* t = std::get_if<ColormapTextureMaterial>(&m); t && !whole(*t->texture)) return false;
+    if (const auto* s = std::get_if<MicrosurfaceMaterial>(&m); s && !whole(*s->heights)) return false;
+  }
+  return true;
+}
+
 // The specialization constants of the pass by their names in the shaders: what the scene uses, how
 // the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
@@ -83,6 +98,7 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_COUNTS_WORK, method.counts_work ? 1u : 0u},
       {FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Linear) ? 1u : 0u},
       {FACET_RENDER_SPEC_HAS_STEP_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Steps) ? 1u : 0u},
+      {FACET_RENDER_SPEC_WHOLE_MIP_TEXELS, mip_texels_are_whole(scene) ? 1u : 0u},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};

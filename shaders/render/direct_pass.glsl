@@ -51,6 +51,7 @@ layout(constant_id = FACET_RENDER_SPEC_AOVS) const bool kWritesAovs = false;
 layout(constant_id = FACET_RENDER_SPEC_COUNTS_WORK) const bool kCountsWork = false;
 layout(constant_id = FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS) const bool kHasLinearColormaps = true;
 layout(constant_id = FACET_RENDER_SPEC_HAS_STEP_COLORMAPS) const bool kHasStepColormaps = true;
+layout(constant_id = FACET_RENDER_SPEC_WHOLE_MIP_TEXELS) const bool kWholeMipTexels = false;  // render/texture_sampling.glsl
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS

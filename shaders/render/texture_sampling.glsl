@@ -1,7 +1,7 @@
 // Colour-mapped textures in the direct pass: bilinear and trilinear lookups of the MIP chains, the
 // colour map at a point and against a Gaussian, and the albedo of a texture by the method selected
 // with the specialization constants kTextureMethod, kWritesAovs, kHasLinearColormaps and kHasStepColormaps
-// (declared by the including shader).
+// and kWholeMipTexels (declared by the including shader).
 #ifndef FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #define FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #include "lib/colormap_filter.glsl"
@@ -36,11 +36,13 @@ TextureLevel texture_level(uint level) {
   return TextureLevel(info, info.w == 0u ? info.yz : texture_level_at(level - info.w).info.yz);
 }
 
+// Where every chain of the scene has whole texels on every level (kWholeMipTexels: power-of-two sizes),
+// the shortcut gives the same taps for a third of the arithmetic (lib/mip_grid.glsl).
 TexelQuad texel_quad(TextureLevel level, vec2 uv) {
   uvec4 info = level.info;
   int span = 1 << info.w;
-  MipAxisTaps x = mip_axis_taps(uv.x, int(level.size0.x), span, int(info.y));
-  MipAxisTaps y = mip_axis_taps(uv.y, int(level.size0.y), span, int(info.z));
+  MipAxisTaps x = kWholeMipTexels ? mip_axis_taps_whole(uv.x, int(info.y)) : mip_axis_taps(uv.x, int(level.size0.x), span, int(info.y));
+  MipAxisTaps y = kWholeMipTexels ? mip_axis_taps_whole(uv.y, int(info.z)) : mip_axis_taps(uv.y, int(level.size0.y), span, int(info.z));
   uint row0 = info.x + uint(y.i0) * info.y, row1 = info.x + uint(y.i1) * info.y;
   return TexelQuad(texel_at(row0 + uint(x.i0)), texel_at(row0 + uint(x.i1)), texel_at(row1 + uint(x.i0)),
                    texel_at(row1 + uint(x.i1)), vec2(x.w1, y.w1));

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
+#include <vector>
 
 #include "kernels/shared.hpp"
 
@@ -50,6 +52,42 @@ TEST(MipGrid, WeightsReproduceThePositionOnEveryLevel) {
     }
   }
   EXPECT_GT(cases, 5000);
+}
+
+// On levels whose texels are all whole (the size a multiple of the span: every level of a power-of-two
+// size, and the finer levels of others) the shortcut returns the general function's taps and weight bit
+// for bit, in float and double, for coordinates across several periods, on texel edges and centres, and
+// non-finite ones.
+template <typename Taps, typename Real>
+void expect_whole_taps_equal(Real u, int size0, int span, int count, Taps general, Taps whole) {
+  EXPECT_EQ(whole.i0, general.i0) << size0 << " span " << span << " u " << u;
+  EXPECT_EQ(whole.i1, general.i1) << size0 << " span " << span << " u " << u;
+  EXPECT_EQ(std::memcmp(&whole.w1, &general.w1, sizeof(Real)), 0)
+      << size0 << " span " << span << " count " << count << " u " << u << ": " << whole.w1 << " vs " << general.w1;
+}
+
+TEST(MipGrid, WholeTexelLevelsTakeTheShortcutsVeryTaps) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> unit(-3.0, 4.0);
+  int cases = 0;
+  for (int size0 : {1, 2, 4, 16, 256, 4096, 96, 40, 1000}) {
+    for (int span = 1; size0 % span == 0; span *= 2) {
+      const int count = size0 / span;
+      std::vector<double> us{0.0, 1.0, -1.0, 0.5 / count, 1.0 - 0.5 / count, 1.0 / count, std::nextafter(1.0, 0.0),
+                             double(NAN), double(INFINITY), -double(INFINITY), 1e300};
+      for (int k = 0; k < 300; ++k) us.push_back(unit(rng));
+      for (double u : us) {
+        expect_whole_taps_equal(u, size0, span, count, k64::mip_axis_taps(u, size0, span, count),
+                                k64::mip_axis_taps_whole(u, count));
+        const float f = static_cast<float>(u);
+        expect_whole_taps_equal(f, size0, span, count, k32::mip_axis_taps(f, size0, span, count),
+                                k32::mip_axis_taps_whole(f, count));
+        ++cases;
+      }
+      if (count == 1) break;
+    }
+  }
+  EXPECT_GT(cases, 10000);
 }
 
 TEST(MipGrid, NonFiniteCoordinatesGiveTexelZero) {

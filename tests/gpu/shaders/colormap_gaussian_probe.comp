@@ -1,7 +1,5 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
-#extension GL_KHR_shader_subgroup_vote : require
 // Test probe of render/texture_sampling.glsl: colormap_gaussian(map, mu, sigma) of the direct pass,
 // or with what = 1 the spread of the mapped colour around it (colormap_spread, the error estimate's
 // eq. 2), with the scene's buffers at their slots (layout/render_layout.glsl), for records (mu, sigma,
@@ -15,6 +13,7 @@ const bool kWritesAovs = false;  // texture_sampling.glsl's own use of the sprea
 // Both kinds of colour map, as in a scene that has both: lanes of step and linear maps side by side.
 const bool kHasLinearColormaps = true;
 const bool kHasStepColormaps = true;
+const bool kWholeMipTexels = false;  // no texture is looked up here
 
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
