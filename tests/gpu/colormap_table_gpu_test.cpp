@@ -185,11 +185,11 @@ TEST(ColormapTableGpu, ExactFilterOfALongMapMatchesTheCpu) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
-// Step maps are summed over the points of every lane of a subgroup together, each lane adding only its own
-// map's jumps (eq. K1 of docs/colormap_filtering.md). Probes cycle through four maps, so every subgroup of 8
-// lanes mixes them: the noise plane's 3-point step map, a 5-point step map with a shifted domain, a
-// 256-point step map (viridis, where the walk stops once every lane's remaining points are beyond reach)
-// and a linear map; against the double CPU sum, 2e-5 as for one map per subgroup above.
+// Step maps are summed over each lane's own points (eq. K1 of docs/colormap_filtering.md), lanes of different
+// maps side by side. Probes cycle through four maps, so every group of 8 lanes that lavapipe runs together
+// mixes them: the noise plane's 3-point step map, a 5-point step map with a shifted domain, a 256-point step
+// map (viridis, where each lane's walk stops at its first point beyond reach) and a linear map; against the
+// double CPU sum, 2e-5 as for one map per group above.
 TEST(ColormapTableGpu, LanesOfDifferentMapsInOneSubgroup) {
   auto context = test::make_validated_context();
   Scene scene = two_map_scene();
