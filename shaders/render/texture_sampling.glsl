@@ -117,39 +117,66 @@ uint colormap_first_point_above(uint first, uint last, float position) {
 // skipped: Q(8) = 6e-16 (docs/colormap_filtering.md, "Step maps").
 const float kColormapReach = 8.0;
 
-// E[colormap(t)] for t ~ N(mu, sigma^2) of a linear map, at m = its position of mu, s = sigma in its
-// parameter: the segments and end tails of lib/colormap_filter.glsl. Only the points within
-// kColormapReach sigma of mu and the one beyond on each side are visited (binary searches; the CPU loop
-// likewise skips what is out of reach): outside, every knot is saturated, so the skipped segments and
-// tails contribute 0 to float precision. Each knot is evaluated once and shared by its two segments and
-// the tails. For a step map (`steps`) the searches and the loop run no step, so no knot costs anything.
+// A point x_k of a linear map at z = (x_k - m)/s, from one exp and the coarse tail (C1): `excess` is
+// g(z) - phi(0), where g(z) = G(-|z|) = phi(z) - |z| Q(|z|) = (E[max(t - x_k, 0)] - max(m - x_k, 0))/s, and
+// `above` is P(t > x_k) = Phi(-z). The sum below takes only differences of g, so phi(0) is left out: where
+// every z is small (s far wider than the map), g - phi(0) ~ -|z|/2 then keeps float's relative accuracy
+// instead of its absolute 3e-8 of phi(0), which divided by a segment's width z_{k+1} - z_k grew with s.
+// e - 1 is its series below |z| = 0.1 (truncation x^8/384 < 3e-11), exp's rounding above.
+struct ColormapSlopeKnot {
+  float excess;
+  float above;
+};
+
+ColormapSlopeKnot colormap_slope_knot(float z) {
+  float x = abs(z);
+  float x2 = min(x * x, 1e30);
+  float e = exp(-0.5 * x2);
+  float e_minus_1 = x2 < 0.01 ? x2 * fma(x2, fma(x2, -1.0 / 48.0, 0.125), -0.5) : e - 1.0;
+  float tail = sf_normal_tail_coarse(x, e);
+  return ColormapSlopeKnot(FACET_INV_SQRT2PI * e_minus_1 - x * tail, z > 0.0 ? tail : 1.0 - tail);
+}
+
+// s at and above which the linear map's mean is its s -> inf limit (c_first + c_last)/2 to float precision
+// (the terms left out are O(1/s)); also what s = inf and NaN are taken as, so every z stays finite and, for
+// finite m, distinct for distinct points.
+const float kColormapLinearSigmaMax = 1e20;
+
+// E[colormap(t)] for t ~ N(m, s^2) of a linear map (m, s in its parameter), eq. L1 of
+// docs/colormap_filtering.md: c_begin plus, per segment, its colour change times w_k, the mean of P(t > x)
+// over the segment,
+//   w_k = (clamp(-z_k, 0, dz) + g(z_k) - g(z_{k+1})) / dz,  dz = z_{k+1} - z_k
+// (clamp(-z_k, 0, dz) = max(-z_k, 0) - max(-z_{k+1}, 0), exact), clamped to [P(t > x_{k+1}), P(t > x_k)],
+// which it lies in: a segment thin against s then has the error of the two probabilities, not float's
+// rounding of g over its width. A segment of no standardized width (m = +-inf, or points equal in float)
+// is thus a jump, weighted by P(t > x_k). One exp and one coarse tail per point, one division per segment,
+// no reflection and no selects of knot values. Only the points within kColormapReach s of m and the one
+// beyond on each side are visited (binary searches): below them w = 1 and above them w = 0 to float
+// precision, which is why the sum starts at c_begin. For a step map (`steps`) the searches and the loop
+// run no step, so no knot costs anything.
 vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
+  s = s < kColormapLinearSigmaMax ? s : kColormapLinearSigmaMax;
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
   float reach = kColormapReach * s;
   uint begin = colormap_first_point_above(first, steps ? first : last, m - reach);
   begin = begin > first ? begin - 1u : first;
   uint end = colormap_first_point_above(begin, steps ? begin : last, m + reach);
-  uint knots = steps ? 0u : end - begin + 1u;
-  vec4 a = vec4(0.0);
-  float za = 0.0;
-  ColormapKnot knot_a = ColormapKnot(0.0, 0.0, 0.0, 0.0);
-  vec3 sum = vec3(0.0);
-  for (uint n = 0u; n < knots; ++n) {
-    vec4 b = colormap_point(begin + n);
+  vec4 a = colormap_point(begin);
+  float za = colormap_standardize(a.w, m, s);
+  ColormapSlopeKnot knot_a = colormap_slope_knot(za);
+  vec3 sum = a.rgb;
+  for (uint k = begin + 1u; k <= (steps ? begin : end); ++k) {
+    vec4 b = colormap_point(k);
     float zb = colormap_standardize(b.w, m, s);
-    ColormapKnot knot_b = colormap_knot_coarse(zb);
-    if (n == 0u) {  // the tail below; the segment from this knot to itself then adds exactly 0
-      sum = b.rgb * knot_b.Phi;
-      a = b;
-      za = zb;
-      knot_a = knot_b;
-    }
-    sum += colormap_segment_from_knots(knot_a, knot_b, za, zb, a.rgb, b.rgb);
+    ColormapSlopeKnot knot_b = colormap_slope_knot(zb);
+    float dz = max(zb - za, 1e-30);  // no 0/0: the clamp below decides a jump's weight
+    float w = (clamp(-za, 0.0, dz) + knot_a.excess - knot_b.excess) / dz;
+    sum += (b.rgb - a.rgb) * clamp(w, knot_b.above, knot_a.above);
     a = b;
     za = zb;
     knot_a = knot_b;
   }
-  return sum + a.rgb * knot_a.Phi_reflected;
+  return sum;
 }
 
 // E[colormap(t)] for t ~ N(mu, sigma^2) of a step map (eq. K1 of docs/colormap_filtering.md): the map is

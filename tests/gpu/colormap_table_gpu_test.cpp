@@ -223,6 +223,98 @@ TEST(ColormapTableGpu, LanesOfDifferentMapsInOneSubgroup) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
+// The float error of eq. L1 (docs/colormap_filtering.md, "Linear maps as a sum of slopes"), in the map's
+// parameter (m, s; points x_k, segment widths h_k). A segment's weight w_k is the difference of g(z) - phi(0)
+// at its ends over its standardized width h_k / s; g - phi(0) lies in [-phi(0), 0] and is computed to 8 eps_f
+// of phi(0) (exp, coarse tail, products), and to 8 eps_f of |z| where |z| < 0.1 (its series), so w_k carries
+// 16 eps_f min(phi(0) s, D_k) / h_k, D_k the farther end's distance from m, plus the coarse tail's 5.3e-7
+// (C1, a smooth error that thin segments do not amplify) and eps_f of the rounded z (|dw/dz| <= phi(0)/2).
+// w_k is also clamped to [P(t > x_{k+1}), P(t > x_k)], each computed to 7.5e-8 (C1) + 4 eps_f, so its error is
+// at most that bracket's width plus twice that: the smaller of the two bounds holds. The positions are rounded
+// to float (eps_f/2 for x_k <= 1), which moves c by that times the steepest slope; the sum of the colours adds
+// 16 eps_f of the largest.
+double linear_sum_float_bound(const Colormap& map, double mu, double sigma) {
+  const double eps_f = std::ldexp(1.0, -24), phi0 = 1.0 / std::sqrt(2.0 * std::numbers::pi);
+  const glm::dvec2 domain = map.domain();
+  const double m = (mu - domain.x) / (domain.y - domain.x), s = sigma / std::abs(domain.y - domain.x);
+  const std::vector<double>& x = map.positions();
+  const std::vector<glm::dvec3>& c = map.colours();
+  const auto above = [&](double position) { return 0.5 * std::erfc((position - m) / std::max(s, 1e-300) / std::sqrt(2.0)); };
+  double bound = 0, steepest = 0, largest = 0;
+  for (size_t k = 0; k + 1 < x.size(); ++k) {
+    const double change = max_channel(c[k + 1] - c[k]), h = x[k + 1] - x[k];
+    const double farther = std::max(std::abs(x[k] - m), std::abs(x[k + 1] - m));
+    const double rounding = 5.3e-7 + eps_f + 16 * eps_f * std::min(phi0 * s, farther) / h;
+    const double bracket = above(x[k]) - above(x[k + 1]) + 2 * (7.5e-8 + 4 * eps_f);
+    bound += change * std::min(rounding, bracket);
+    steepest = std::max(steepest, change / h);
+  }
+  for (const glm::dvec3& colour : c) largest = std::max({largest, colour.x, colour.y, colour.z});
+  return bound + steepest * eps_f / 2 + 16 * eps_f * largest;
+}
+
+// Eq. L1 on the linear maps that stress it: colormap_anisotropic's 5-point map and a map with one segment
+// 2^-13 of the domain wide (a near-jump of 0.8) between wide ones; sigma from 1e-8 to 1e3 domain widths, means
+// at random and exactly on the points (sigma 0 too, where the point value is continuous); against the double
+// CPU sum within linear_sum_float_bound per probe (the double sum's own error, 8 eps_d sigma / h, is below
+// 1e-8 here). Extreme and non-finite moments give finite colours within the map's.
+TEST(ColormapTableGpu, LinearMapsUnderStressMatchTheCpu) {
+  auto context = test::make_validated_context();
+  Scene scene = load_scene(std::string(FACET_SOURCE_DIR) + "/scenes/colormap_anisotropic.json");
+  const ScalarTexture texture = std::get<ColormapTextureMaterial>(scene.materials.at(0)).texture;
+  const double thin = std::ldexp(1.0, -13);
+  scene.materials.push_back(ColormapTextureMaterial{
+      texture, Colormap({0.0, 0.375, 0.375 + thin, 1.0},
+                        {{0.05, 0.1, 0.6}, {0.9, 0.3, 0.1}, {0.1, 0.9, 0.2}, {1.0, 0.95, 0.9}},
+                        Colormap::Interpolation::Linear)});
+  scene.material_names.push_back("thin segment");
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<vec4> probes;
+  for (float m = 0; m < 2; ++m) {
+    const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(m))).colormap;
+    ASSERT_EQ(map.domain(), glm::dvec2(0.0, 1.0));  // mu is then the parameter itself, with no rounding
+    for (int k = 0; k < 6000; ++k)
+      probes.emplace_back(-0.5 + 2.0 * unit(rng), std::pow(10.0, -8.0 + 11.0 * unit(rng)), m, 0);
+    for (double x : map.positions())
+      for (float sigma : {0.0f, 1e-8f, 1e-5f, 1e-3f, 0.1f, 1.0f, 10.0f, 1e3f}) {
+        probes.emplace_back(float(x), sigma, m, 0);
+        probes.emplace_back(float(x + thin / 2), sigma, m, 0);  // inside the thin segment, or beside a point
+      }
+  }
+  const size_t regular = probes.size();
+  const float inf = INFINITY, nan = NAN;
+  for (float m = 0; m < 2; ++m)
+    for (float mu : {-1e30f, -5.0f, 0.375f, 5.0f, 1e30f, inf, -inf, nan})
+      for (float sigma : {0.0f, 1e-30f, 1e4f, 1e20f, 1e30f, inf, nan}) probes.emplace_back(mu, sigma, m, 0);
+  const std::vector<vec4> gpu = GaussianProbe(*context, scene, false).run(probes, 3);
+  std::array<double, 2> worst{}, worst_of_bound{};
+  std::array<size_t, 2> worst_probe{};
+  for (size_t i = 0; i < regular; ++i) {
+    const size_t m = size_t(probes[i].z);
+    const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(m)).colormap;
+    const double error = max_channel(glm::dvec3(gpu[i]) - precompute::filtered_colormap_exact(map, probes[i].x, probes[i].y));
+    const double bound = linear_sum_float_bound(map, probes[i].x, probes[i].y);
+    if (error > worst[m]) worst[m] = error, worst_probe[m] = i;
+    worst_of_bound[m] = std::max(worst_of_bound[m], error / bound);
+    ASSERT_LE(error, bound) << "map " << m << " mu " << probes[i].x << " sigma " << probes[i].y;
+  }
+  for (size_t i = regular; i < probes.size(); ++i) {
+    const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(probes[i].z))).colormap;
+    for (int k = 0; k < 3; ++k) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (const glm::dvec3& colour : map.colours()) lo = std::min(lo, colour[k]), hi = std::max(hi, colour[k]);
+      EXPECT_TRUE(std::isfinite(gpu[i][k])) << probes[i].x << " " << probes[i].y;
+      EXPECT_GE(gpu[i][k], lo - 1e-6) << probes[i].x << " " << probes[i].y;
+      EXPECT_LE(gpu[i][k], hi + 1e-6) << probes[i].x << " " << probes[i].y;
+    }
+  }
+  for (size_t m = 0; m < 2; ++m)
+    std::printf("linear map %zu, GPU exact vs CPU exact: worst %.2e at mu %.6g sigma %.3g; worst %.3f of the bound\n",
+                m, worst[m], probes[worst_probe[m]].x, probes[worst_probe[m]].y, worst_of_bound[m]);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
 // Var[c(t)], t ~ N(mu, sigma^2), per channel, by brute force: Gauss-Legendre over pieces of at most
 // sigma / 2 on mu +- 10 sigma, cut at the map's knots (c is a polynomial on each piece, the Gaussian
 // smooth), mean and second moment from the same nodes.
