@@ -142,6 +142,10 @@ ColormapSlopeKnot colormap_slope_knot(float z) {
 // finite m, distinct for distinct points.
 const float kColormapLinearSigmaMax = 1e20;
 
+// Linear maps of at most this many points are walked whole: the two binary searches' loops of loads cost
+// lavapipe more than the few points they skip (docs/render_speed.md, "Linear colour maps as a sum of slopes").
+const uint kColormapWalkedPoints = 16u;
+
 // E[colormap(t)] for t ~ N(m, s^2) of a linear map (m, s in its parameter), eq. L1 of
 // docs/colormap_filtering.md: c_begin plus, per segment, its colour change times w_k, the mean of P(t > x)
 // over the segment,
@@ -152,20 +156,22 @@ const float kColormapLinearSigmaMax = 1e20;
 // is thus a jump, weighted by P(t > x_k). One exp and one coarse tail per point, one division per segment,
 // no reflection and no selects of knot values. Only the points within kColormapReach s of m and the one
 // beyond on each side are visited (binary searches): below them w = 1 and above them w = 0 to float
-// precision, which is why the sum starts at c_begin. For a step map (`steps`) the searches and the loop
-// run no step, so no knot costs anything.
+// precision, which is why the sum starts at c_begin (maps of up to kColormapWalkedPoints are not searched).
+// For a step map (`steps`) the searches and the loop run no step, so only one knot costs anything.
 vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
   s = s < kColormapLinearSigmaMax ? s : kColormapLinearSigmaMax;
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
   float reach = kColormapReach * s;
-  uint begin = colormap_first_point_above(first, steps ? first : last, m - reach);
+  bool searches = !steps && map.info.y > kColormapWalkedPoints;
+  uint begin = colormap_first_point_above(first, searches ? last : first, m - reach);
   begin = begin > first ? begin - 1u : first;
-  uint end = colormap_first_point_above(begin, steps ? begin : last, m + reach);
+  uint end = colormap_first_point_above(begin, searches ? last : begin, m + reach);
+  end = steps ? begin : searches ? end : last;
   vec4 a = colormap_point(begin);
   float za = colormap_standardize(a.w, m, s);
   ColormapSlopeKnot knot_a = colormap_slope_knot(za);
   vec3 sum = a.rgb;
-  for (uint k = begin + 1u; k <= (steps ? begin : end); ++k) {
+  for (uint k = begin + 1u; k <= end; ++k) {
     vec4 b = colormap_point(k);
     float zb = colormap_standardize(b.w, m, s);
     ColormapSlopeKnot knot_b = colormap_slope_knot(zb);
