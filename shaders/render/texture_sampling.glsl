@@ -157,7 +157,7 @@ const uint kColormapWalkedPoints = 16u;
 // no reflection and no selects of knot values. Only the points within kColormapReach s of m and the one
 // beyond on each side are visited (binary searches): below them w = 1 and above them w = 0 to float
 // precision, which is why the sum starts at c_begin (maps of up to kColormapWalkedPoints are not searched).
-// For a step map (`steps`) the searches and the loop run no step, so only one knot costs anything.
+// For a step map (`steps`) the searches and the loop run no step, so no knot costs anything.
 vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
   s = s < kColormapLinearSigmaMax ? s : kColormapLinearSigmaMax;
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
@@ -166,18 +166,21 @@ vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
   uint begin = colormap_first_point_above(first, searches ? last : first, m - reach);
   begin = begin > first ? begin - 1u : first;
   uint end = colormap_first_point_above(begin, searches ? last : begin, m + reach);
-  end = steps ? begin : searches ? end : last;
-  vec4 a = colormap_point(begin);
-  float za = colormap_standardize(a.w, m, s);
-  ColormapSlopeKnot knot_a = colormap_slope_knot(za);
-  vec3 sum = a.rgb;
-  for (uint k = begin + 1u; k <= end; ++k) {
+  end = searches ? end : last;
+  // The first point's colour enters as a jump from black of weight 1 inside the loop: a knot before the
+  // loop would run for every lane, step maps' too (in a scene with both kinds, 8 of colormap_objects'
+  // 196 FMA-equivalents per pixel), the loop's body only while some lane iterates.
+  vec4 a = vec4(0.0);
+  float za = 0.0;
+  ColormapSlopeKnot knot_a = ColormapSlopeKnot(0.0, 1.0);
+  vec3 sum = vec3(0.0);
+  for (uint k = begin; k < (steps ? begin : end + 1u); ++k) {
     vec4 b = colormap_point(k);
     float zb = colormap_standardize(b.w, m, s);
     ColormapSlopeKnot knot_b = colormap_slope_knot(zb);
     float dz = max(zb - za, 1e-30);  // no 0/0: the clamp below decides a jump's weight
     float w = (clamp(-za, 0.0, dz) + knot_a.excess - knot_b.excess) / dz;
-    sum += (b.rgb - a.rgb) * clamp(w, knot_b.above, knot_a.above);
+    sum += (b.rgb - a.rgb) * (k == begin ? 1.0 : clamp(w, knot_b.above, knot_a.above));
     a = b;
     za = zb;
     knot_a = knot_b;
