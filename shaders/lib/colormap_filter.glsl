@@ -1,8 +1,9 @@
 // Exact filtering of a piecewise-linear colour map against a Gaussian N(mu, sigma^2) of the mapped
 // scalar (Heitz et al. 2013, "Filtering Color Mapped Textures and Surfaces": E[colormap(t)] over the
 // footprint, t ~ N(mu, sigma^2)). A map is the sum of its segments and its two constant end tails; the
-// loop over the control points lives with each caller (GLSL over a buffer, C++ over a vector), which
-// may evaluate each control point's ColormapKnot once and share it between its two segments.
+// loop over the control points lives with each caller (the C++ reference over a vector), which may evaluate
+// each control point's ColormapKnot once and share it between its two segments. The render pass sums
+// linear maps by their slopes instead (eq. L1, render/texture_sampling.glsl).
 // Derivation, stability argument and tests: docs/colormap_filtering.md.
 #ifndef FACET_COLORMAP_FILTER_GLSL
 #define FACET_COLORMAP_FILTER_GLSL
