@@ -146,6 +146,24 @@ const float kColormapLinearSigmaMax = 1e20;
 // lavapipe more than the few points they skip (docs/render_speed.md, "Linear colour maps as a sum of slopes").
 const uint kColormapWalkedPoints = 16u;
 
+// The points [begin, end] a linear map's sums visit: those within kColormapReach s of m and the one beyond
+// on each side (binary searches; beyond them a Gaussian's weights are 0 or 1 to float precision), or the
+// whole map where it has at most kColormapWalkedPoints points. A step map (`steps`) searches nothing.
+struct ColormapWindow {
+  uint begin;
+  uint end;
+};
+
+ColormapWindow colormap_linear_window(GpuColormap map, float m, float s, bool steps) {
+  uint first = map.info.x, last = map.info.x + map.info.y - 1u;
+  float reach = kColormapReach * s;
+  bool searches = !steps && map.info.y > kColormapWalkedPoints;
+  uint begin = colormap_first_point_above(first, searches ? last : first, m - reach);
+  begin = begin > first ? begin - 1u : first;
+  uint end = colormap_first_point_above(begin, searches ? last : begin, m + reach);
+  return ColormapWindow(begin, searches ? end : last);
+}
+
 // E[colormap(t)] for t ~ N(m, s^2) of a linear map (m, s in its parameter), eq. L1 of
 // docs/colormap_filtering.md: c_begin plus, per segment, its colour change times w_k, the mean of P(t > x)
 // over the segment,
@@ -160,13 +178,8 @@ const uint kColormapWalkedPoints = 16u;
 // For a step map (`steps`) the searches and the loop run no step, so no knot costs anything.
 vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
   s = s < kColormapLinearSigmaMax ? s : kColormapLinearSigmaMax;
-  uint first = map.info.x, last = map.info.x + map.info.y - 1u;
-  float reach = kColormapReach * s;
-  bool searches = !steps && map.info.y > kColormapWalkedPoints;
-  uint begin = colormap_first_point_above(first, searches ? last : first, m - reach);
-  begin = begin > first ? begin - 1u : first;
-  uint end = colormap_first_point_above(begin, searches ? last : begin, m + reach);
-  end = searches ? end : last;
+  ColormapWindow window = colormap_linear_window(map, m, s, steps);
+  uint begin = window.begin, end = window.end;
   // The first point's colour enters as a jump from black of weight 1 inside the loop: a knot before the
   // loop would run for every lane, step maps' too (in a scene with both kinds, 8 of colormap_objects'
   // 196 FMA-equivalents per pixel), the loop's body only while some lane iterates.
@@ -286,35 +299,81 @@ vec2 footprint_moments(MomentLevels levels, vec2 uv, vec2 axis_a, vec2 axis_b) {
 }
 
 // The spread of the mapped colour under t ~ N(mu, sigma^2): sqrt(E[(colormap(t) - mean)^2]) per channel
-// (docs/error_estimate.md, eq. 2), `mean` the pass's E[colormap(t)]. On a segment the colour less the mean
-// is p + q z in the standard variable z = (t - mu)/sigma, and over [a, b]
+// (docs/error_estimate.md, eq. 2), `mean` the pass's E[colormap(t)], centred on it: a footprint within one
+// step of the map reads (c - mean)^2 ~ 1e-14, not the float cancellation of E[c^2] - mean^2 (~1e-7 of c^2,
+// a spread of ~3e-4). Each kind of map has its own loop, as for the mean (colormap_filtered).
+
+// A linear map's second moment about `mean` over the points of colormap_linear_window (beyond them the
+// Gaussian has no mass to float precision). On a segment the colour less the mean is p + q z in the
+// standard variable z = (t - mu)/sigma, and over [a, b]
 //   integral (p + q z)^2 phi(z) dz = p^2 dPhi + 2 p q (phi(a) - phi(b)) + q^2 (dPhi + a phi(a) - b phi(b)),
-// the end tails adding (c_first - mean)^2 Phi(z_first) and (c_last - mean)^2 Phi(-z_last). Centred on the
-// mean, a footprint within one step of the map reads (c - mean)^2 ~ 1e-14, not the float cancellation
-// of E[c^2] - mean^2 (~1e-7 of c^2, a spread of ~3e-4).
-vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
-  float m = colormap_position(map, mu), s = max(sigma / abs(map.domain.y - map.domain.x), 1e-30);
-  uint first = map.info.x, last = map.info.x + map.info.y - 1u;
-  vec4 a = colormap_point(first);
+// the end tails adding (c_begin - mean)^2 Phi(z_begin) and (c_end - mean)^2 Phi(-z_end). For a step map
+// (`steps`) the loop runs no step.
+vec3 colormap_linear_second_moment(GpuColormap map, float m, float s, vec3 mean, bool steps) {
+  ColormapWindow window = colormap_linear_window(map, m, s, steps);
+  vec4 a = colormap_point(window.begin);
   a.rgb -= mean;
   float za = colormap_standardize(a.w, m, s);
   ColormapKnot ka = colormap_knot_coarse(za);
+  float pdf_a = sf_normal_pdf(za);
   vec3 second = a.rgb * a.rgb * ka.Phi;
-  for (uint i = first; i < last; ++i) {
+  for (uint i = window.begin; i < (steps ? window.begin : window.end); ++i) {
     vec4 b = colormap_point(i + 1u);
     b.rgb -= mean;
     float zb = colormap_standardize(b.w, m, s);
     ColormapKnot kb = colormap_knot_coarse(zb);
-    bool linear = map.info.z != 1u && zb > za;
-    vec3 q = linear ? (b.rgb - a.rgb) / (zb - za) : vec3(0.0);
+    vec3 q = zb > za ? (b.rgb - a.rgb) / (zb - za) : vec3(0.0);
     vec3 p = a.rgb - q * za;  // the colour less the mean at z = 0 (t = mu)
-    float dPhi = max(kb.Phi - ka.Phi, 0.0), pdf_a = sf_normal_pdf(za), pdf_b = sf_normal_pdf(zb);
+    float dPhi = max(kb.Phi - ka.Phi, 0.0), pdf_b = sf_normal_pdf(zb);
     second += p * p * dPhi + 2.0 * p * q * (pdf_a - pdf_b) + q * q * (dPhi + za * pdf_a - zb * pdf_b);
     a = b;
     za = zb;
     ka = kb;
+    pdf_a = pdf_b;
   }
-  second += a.rgb * a.rgb * ka.Phi_reflected;
+  return second + a.rgb * a.rgb * ka.Phi_reflected;
+}
+
+// A step map's second moment about `mean`: step k (colour c_k on [x_k, x_{k+1}), c_first below, c_last
+// above) weighs P(x_k < t < x_{k+1}), one coarse normal tail per point (as eq. K1). The weight is taken as
+// a difference of the two probabilities that are small on its side of the mean, P(t < x) below it and
+// P(t > x) above (a step across the mean: 1 - P(t < x_k) - P(t > x_{k+1})), never of two numbers near 1,
+// whose float difference (~6e-8) would outweigh the tails of a footprint a few sigma inside one step. Each
+// lane walks its own points upwards and stops after its first point beyond kColormapReach s above its
+// mean, whose P(t > x) and all later ones are 0 to float precision (none for a linear map, `steps` false).
+vec3 colormap_steps_second_moment(GpuColormap map, float m, float s, vec3 mean, bool steps) {
+  uint first = map.info.x, last = steps ? map.info.x + map.info.y - 1u : first;
+  vec3 step = colormap_point(first).rgb - mean;  // the current step's colour less the mean
+  float below_step = 0.0, above_step = 1.0;      // P(t < x), P(t > x) at its lower end: the first reaches -inf
+  vec3 second = vec3(0.0);
+  for (uint k = first + 1u; k <= last; ++k) {
+    vec4 p = colormap_point(k);
+    float z = colormap_standardize(p.w, m, s);
+    float x = abs(z);
+    float tail = sf_normal_tail_coarse(x, exp(-0.5 * min(x * x, 1e30)));
+    float below = z > 0.0 ? 1.0 - tail : tail, above = z > 0.0 ? tail : 1.0 - tail;
+    second += step * step * max(z > 0.0 ? above_step - above : below - below_step, 0.0);
+    step = p.rgb - mean;
+    below_step = below;
+    above_step = above;
+    if (z > kColormapReach) break;
+  }
+  return second + step * step * above_step;
+}
+
+vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
+  float m = colormap_position(map, mu), s = max(sigma / abs(map.domain.y - map.domain.x), 1e-30);
+  vec3 second;
+  if (!kHasLinearColormaps) {
+    second = colormap_steps_second_moment(map, m, s, mean, true);
+  } else if (!kHasStepColormaps) {
+    second = colormap_linear_second_moment(map, m, s, mean, false);
+  } else {
+    bool steps = map.info.z == 1u;
+    vec3 of_steps = colormap_steps_second_moment(map, m, s, mean, steps);
+    vec3 of_segments = colormap_linear_second_moment(map, m, s, mean, steps);
+    second = steps ? of_steps : of_segments;
+  }
   return sqrt(max(second, vec3(0.0)));
 }
 

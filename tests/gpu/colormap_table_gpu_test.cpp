@@ -347,7 +347,8 @@ glm::dvec3 colour_variance_by_quadrature(const Colormap& map, double mu, double 
 }
 
 // colormap_spread on the GPU (float) squared against the variance by quadrature (double), on a step
-// map and a linear map with a shifted domain, sigma from 1e-3 to 2 domain widths. Float cancellation in
+// map, a linear map with a shifted domain and viridis as a 256-point linear and step map (lanes of every
+// kind side by side), sigma from 1e-3 to 2 domain widths. Float cancellation in
 // E[c^2] - E[c]^2 bounds the agreement of the variances, not of their roots: 2e-5 for colours <= 1
 // (measured 1.7e-5 with exact knots). The shader's coarse knots (docs/colormap_filtering.md, "Coarse
 // knots") move each segment's weight by at most 6e-7, so E[c] by 6e-7 TV(c) and E[c^2] by 6e-7 TV(c^2)
@@ -355,15 +356,21 @@ glm::dvec3 colour_variance_by_quadrature(const Colormap& map, double mu, double 
 // variation in its most varying channel. Extreme inputs give finite spreads within the colours.
 TEST(ColormapTableGpu, ColourSpreadMatchesQuadrature) {
   auto context = test::make_validated_context();
-  const Scene scene = two_map_scene();
+  Scene scene = two_map_scene();
+  // 256-point maps, where each kind's sum visits only the points within reach of the mean.
+  const ScalarTexture texture = std::get<ColormapTextureMaterial>(scene.materials.at(0)).texture;
+  for (const auto interpolation : {Colormap::Interpolation::Linear, Colormap::Interpolation::Steps}) {
+    scene.materials.push_back(ColormapTextureMaterial{texture, builtin_colormap("viridis", interpolation, {-0.5, 1.5})});
+    scene.material_names.push_back(interpolation == Colormap::Interpolation::Linear ? "viridis" : "viridis steps");
+  }
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<vec4> probes;
-  for (int m = 0; m < 2; ++m)
+  for (int m = 0; m < 4; ++m)
     for (int k = 0; k < 60; ++k)
       probes.emplace_back(-0.2 + 1.4 * unit(rng), std::pow(10.0, -3.0 + 3.3 * unit(rng)), m, 1);
   const size_t regular = probes.size();
-  for (int m = 0; m < 2; ++m)
+  for (int m = 0; m < 4; ++m)
     for (float mu : {-1e30f, 0.5f, 1e30f})
       for (float sigma : {0.0f, 1e-30f, 10.0f, 1e30f}) probes.emplace_back(mu, sigma, m, 1);
   const std::vector<vec4> spread = GaussianProbe(*context, scene, false).run(probes, 3);
@@ -391,10 +398,12 @@ TEST(ColormapTableGpu, ColourSpreadMatchesQuadrature) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
-// Within one step of a step map and 6 to 12 sigma from its jumps the colour is nearly constant: the spread
+// Within one step of a step map and 3 to 12 sigma from its jumps the colour is nearly constant: the spread
 // is that of the tails beyond the jumps (quadrature). The GPU's is within 2e-5 of it (the mean's float
 // rounding, ~1e-7, and the coarse knots' relative error in the tails), not off by the cancellation of
-// E[c^2] - mean^2 (~1e-7 of c^2, a spread of ~3e-4), which would rank such pixels among the erring ones.
+// E[c^2] - mean^2 (~1e-7 of c^2, a spread of ~3e-4), which would rank such pixels among the erring ones,
+// nor by a tail's weight taken as the difference of two probabilities near 1 (~6e-8 each, a spread of
+// ~2e-4 where the tails are 5 sigma away).
 TEST(ColormapTableGpu, ColourSpreadWithinAStepIsZero) {
   auto context = test::make_validated_context();
   const Scene scene = two_map_scene();
@@ -407,7 +416,7 @@ TEST(ColormapTableGpu, ColourSpreadWithinAStepIsZero) {
   for (size_t k = 0; k + 1 < steps.positions().size(); ++k) {
     const double gap = steps.positions()[k + 1] - steps.positions()[k];
     for (int i = 0; i < 40; ++i) {
-      const double sigma = gap / (12.0 + 12.0 * unit(rng));  // the middle at 6-12 sigma from each jump
+      const double sigma = gap / (6.0 + 18.0 * unit(rng));  // the middle at 3-12 sigma from each jump
       const double middle = steps.positions()[k] + gap * (0.5 + 0.02 * (unit(rng) - 0.5));
       probes.emplace_back(steps.domain().x + middle * width, sigma * width, 0, 1);
     }
