@@ -189,7 +189,8 @@ TEST(ColormapTableGpu, ExactFilterOfALongMapMatchesTheCpu) {
 // maps side by side. Probes cycle through four maps, so every group of 8 lanes that lavapipe runs together
 // mixes them: the noise plane's 3-point step map, a 5-point step map with a shifted domain, a 256-point step
 // map (viridis, where each lane's walk stops at its first point beyond reach) and a linear map; against the
-// double CPU sum, 2e-5 as for one map per group above.
+// double CPU sum, 2e-5 as for one map per group above. Extreme and non-finite mu and sigma give finite colours
+// within each map's.
 TEST(ColormapTableGpu, LanesOfDifferentMapsInOneSubgroup) {
   auto context = test::make_validated_context();
   Scene scene = two_map_scene();
@@ -209,9 +210,25 @@ TEST(ColormapTableGpu, LanesOfDifferentMapsInOneSubgroup) {
     const double s = unit(rng);
     probes.emplace_back(-1.5 + 5.0 * unit(rng), std::pow(s, 4), k % 4, 0);  // sigma from 1e-8 to 1
   }
+  // Extreme and non-finite moments, every map: finite colours within the map's (the exact path's steps too).
+  const size_t regular = probes.size();
+  const float inf = INFINITY, nan = NAN;
+  for (float m = 0; m < 4; ++m)
+    for (float mu : {-1e30f, -5.0f, 0.5f, 5.0f, 1e30f, inf, -inf, nan})
+      for (float sigma : {0.0f, 1e-30f, 1e4f, 1e20f, 1e30f, inf, nan}) probes.emplace_back(mu, sigma, m, 0);
   const std::vector<vec4> gpu = GaussianProbe(*context, scene, false).run(probes, 3);
+  for (size_t i = regular; i < probes.size(); ++i) {
+    const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(probes[i].z))).colormap;
+    for (int k = 0; k < 3; ++k) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (const glm::dvec3& colour : map.colours()) lo = std::min(lo, colour[k]), hi = std::max(hi, colour[k]);
+      EXPECT_TRUE(std::isfinite(gpu[i][k])) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
+      EXPECT_GE(gpu[i][k], lo - 1e-6) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
+      EXPECT_LE(gpu[i][k], hi + 1e-6) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
+    }
+  }
   std::array<double, 4> worst{};
-  for (size_t i = 0; i < probes.size(); ++i) {
+  for (size_t i = 0; i < regular; ++i) {
     const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(probes[i].z))).colormap;
     const double error =
         max_channel(glm::dvec3(gpu[i]) - precompute::filtered_colormap_exact(map, probes[i].x, probes[i].y));
