@@ -185,6 +185,29 @@ TEST(ColormapTableGpu, ExactFilterOfALongMapMatchesTheCpu) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
+// Extreme and non-finite moments for maps 0 .. maps - 1 (`inside`: a mean within the maps), appended to `probes`.
+void add_extreme_probes(std::vector<vec4>& probes, int maps, float inside) {
+  const float inf = INFINITY, nan = NAN;
+  for (int m = 0; m < maps; ++m)
+    for (float mu : {-1e30f, -5.0f, inside, 5.0f, 1e30f, inf, -inf, nan})
+      for (float sigma : {0.0f, 1e-30f, 1e4f, 1e20f, 1e30f, inf, nan}) probes.emplace_back(mu, sigma, m, 0);
+}
+
+// Every probe from `first` on gives finite colours within its map's colours.
+void expect_within_the_colours(const Scene& scene, const std::vector<vec4>& probes, const std::vector<vec4>& gpu,
+                               size_t first) {
+  for (size_t i = first; i < probes.size(); ++i) {
+    const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(probes[i].z))).colormap;
+    for (int k = 0; k < 3; ++k) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (const glm::dvec3& colour : map.colours()) lo = std::min(lo, colour[k]), hi = std::max(hi, colour[k]);
+      EXPECT_TRUE(std::isfinite(gpu[i][k])) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
+      EXPECT_GE(gpu[i][k], lo - 1e-6) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
+      EXPECT_LE(gpu[i][k], hi + 1e-6) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
+    }
+  }
+}
+
 // Step maps are summed over each lane's own points (eq. K1 of docs/colormap_filtering.md), lanes of different
 // maps side by side. Probes cycle through four maps, so every group of 8 lanes that lavapipe runs together
 // mixes them: the noise plane's 3-point step map, a 5-point step map with a shifted domain, a 256-point step
@@ -210,23 +233,10 @@ TEST(ColormapTableGpu, LanesOfDifferentMapsInOneSubgroup) {
     const double s = unit(rng);
     probes.emplace_back(-1.5 + 5.0 * unit(rng), std::pow(s, 4), k % 4, 0);  // sigma from 1e-8 to 1
   }
-  // Extreme and non-finite moments, every map: finite colours within the map's (the exact path's steps too).
   const size_t regular = probes.size();
-  const float inf = INFINITY, nan = NAN;
-  for (float m = 0; m < 4; ++m)
-    for (float mu : {-1e30f, -5.0f, 0.5f, 5.0f, 1e30f, inf, -inf, nan})
-      for (float sigma : {0.0f, 1e-30f, 1e4f, 1e20f, 1e30f, inf, nan}) probes.emplace_back(mu, sigma, m, 0);
+  add_extreme_probes(probes, 4, 0.5f);  // the exact path's step maps too
   const std::vector<vec4> gpu = GaussianProbe(*context, scene, false).run(probes, 3);
-  for (size_t i = regular; i < probes.size(); ++i) {
-    const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(probes[i].z))).colormap;
-    for (int k = 0; k < 3; ++k) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (const glm::dvec3& colour : map.colours()) lo = std::min(lo, colour[k]), hi = std::max(hi, colour[k]);
-      EXPECT_TRUE(std::isfinite(gpu[i][k])) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
-      EXPECT_GE(gpu[i][k], lo - 1e-6) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
-      EXPECT_LE(gpu[i][k], hi + 1e-6) << "map " << probes[i].z << " mu " << probes[i].x << " sigma " << probes[i].y;
-    }
-  }
+  expect_within_the_colours(scene, probes, gpu, regular);
   std::array<double, 4> worst{};
   for (size_t i = 0; i < regular; ++i) {
     const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(probes[i].z))).colormap;
@@ -300,11 +310,9 @@ TEST(ColormapTableGpu, LinearMapsUnderStressMatchTheCpu) {
       }
   }
   const size_t regular = probes.size();
-  const float inf = INFINITY, nan = NAN;
-  for (float m = 0; m < 2; ++m)
-    for (float mu : {-1e30f, -5.0f, 0.375f, 5.0f, 1e30f, inf, -inf, nan})
-      for (float sigma : {0.0f, 1e-30f, 1e4f, 1e20f, 1e30f, inf, nan}) probes.emplace_back(mu, sigma, m, 0);
+  add_extreme_probes(probes, 2, 0.375f);
   const std::vector<vec4> gpu = GaussianProbe(*context, scene, false).run(probes, 3);
+  expect_within_the_colours(scene, probes, gpu, regular);
   std::array<double, 2> worst{}, worst_of_bound{};
   std::array<size_t, 2> worst_probe{};
   for (size_t i = 0; i < regular; ++i) {
@@ -315,16 +323,6 @@ TEST(ColormapTableGpu, LinearMapsUnderStressMatchTheCpu) {
     if (error > worst[m]) worst[m] = error, worst_probe[m] = i;
     worst_of_bound[m] = std::max(worst_of_bound[m], error / bound);
     ASSERT_LE(error, bound) << "map " << m << " mu " << probes[i].x << " sigma " << probes[i].y;
-  }
-  for (size_t i = regular; i < probes.size(); ++i) {
-    const Colormap& map = std::get<ColormapTextureMaterial>(scene.materials.at(size_t(probes[i].z))).colormap;
-    for (int k = 0; k < 3; ++k) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (const glm::dvec3& colour : map.colours()) lo = std::min(lo, colour[k]), hi = std::max(hi, colour[k]);
-      EXPECT_TRUE(std::isfinite(gpu[i][k])) << probes[i].x << " " << probes[i].y;
-      EXPECT_GE(gpu[i][k], lo - 1e-6) << probes[i].x << " " << probes[i].y;
-      EXPECT_LE(gpu[i][k], hi + 1e-6) << probes[i].x << " " << probes[i].y;
-    }
   }
   for (size_t m = 0; m < 2; ++m)
     std::printf("linear map %zu, GPU exact vs CPU exact: worst %.2e at mu %.6g sigma %.3g; worst %.3f of the bound\n",
