@@ -114,8 +114,10 @@ vec4 heightfield_extent(HeightField f, int level, ivec2 node, ivec2 tile) {
 }
 
 // The corners (z00, z10, z01, z11) of a level's surface over its node n: one texel of the level's
-// corner quads (record `info`; microsurface_upload.hpp).
-vec4 heightfield_node_corners(uvec4 info, ivec2 n) { return texel_at(info.x + uint(n.y) * info.y + uint(n.x)); }
+// corner quads (record `info`; microsurface_upload.hpp), at this address.
+uint heightfield_corners_address(uvec4 info, ivec2 n) { return info.x + uint(n.y) * info.y + uint(n.x); }
+
+vec4 heightfield_node_corners(uvec4 info, ivec2 n) { return texel_at(heightfield_corners_address(info, n)); }
 
 // The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e),
 // given z, the leaf level's own corners of n: those blended with the next level's surface at the same
@@ -207,7 +209,7 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     // bounds; a cell's min-max bound is their extremes (microsurface_upload). A leaf's corners and a
     // node's bound are each one texel, so a step makes one load at the address its lane needs: lavapipe
     // runs both sides of a branch its 8 lanes disagree on, which cost groups of leaf and node lanes two.
-    uint address = leaf ? f.leaf_corners.x + uint(node.y) * f.leaf_corners.y + uint(node.x)
+    uint address = leaf ? heightfield_corners_address(f.leaf_corners, node)
                         : f.bound_base + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, min(level, f.top)) +
                               uint(node.y * nodes.x + node.x);
     vec4 texel = texel_at(address);
