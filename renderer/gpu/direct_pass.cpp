@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -66,9 +67,9 @@ bool uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
 // chains) has whole texels on every level: level-0 sizes that are powers of two (mip_chain_sizes halves
 // them to 1 x 1), so the shader may take lib/mip_grid.glsl's shortcut.
 bool mip_texels_are_whole(const Scene& scene) {
-  const auto power_of_two = [](int n) { return n > 0 && (n & (n - 1)) == 0; };
-  const auto whole = [&](const assets::ScalarField& field) {
-    return power_of_two(field.width) && power_of_two(field.height);
+  const auto whole = [](const assets::ScalarField& field) {
+    return std::has_single_bit(static_cast<unsigned>(field.width)) &&
+           std::has_single_bit(static_cast<unsigned>(field.height));
   };
   for (const Material& m : scene.materials) {
     if (const auto* t = std::get_if<ColormapTextureMaterial>(&m); t && !whole(*t->texture)) return false;
