@@ -83,5 +83,6 @@ FACET_MICROSURFACE_SCENE(microsurface_slope);
 FACET_MICROSURFACE_SCENE(microsurface_glossy);
 FACET_MICROSURFACE_SCENE(microsurface_rough_diagonal);
 FACET_MICROSURFACE_SCENE(microsurface_horizon);
+FACET_MICROSURFACE_SCENE(microsurface_steep);
 
 }  // namespace

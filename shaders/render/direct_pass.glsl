@@ -108,9 +108,9 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
 #endif
   // One call of occluded() casts every shadow ray (each call of the height-field traversal is compiled
   // on its own): the hit's own, and for a filtered field hit shaded partly by statistics (w < 1) a
-  // second from the flat rectangle (microsurface_field_radiance). The origin is offset by a distance
-  // relative to the scene's scale at p; less from a traced field's hits, which are exact to a few float
-  // ulps where the field's detail is finer than the macro-surfaces' offset.
+  // second through the field smoothed to the traced level (microsurface_field_radiance). The origin is
+  // offset by a distance relative to the scene's scale at p; less from a traced field's hits, which are
+  // exact to a few float ulps where the field's detail is finer than the macro-surfaces' offset.
   vec2 visibility = vec2(1.0);
   int rays = 1;
 #if defined(FACET_HEIGHT_FIELDS) && FACET_VARIANT_HAS(FACET_CODE_FILTERED)
@@ -120,19 +120,20 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
     Hit from = hit;
     vec3 from_n = n;
     float offset = field_hit ? 1e-5 : 1e-4;
-    bool fields = kTracesHeightFields;
     bool lit = dot(n, l) > 0.0;
+    float lambda = 0.0;
 #ifdef FACET_HEIGHT_FIELDS
     lit = lit && (!field_hit || field.w > 0.0);  // a filtered hit shaded by statistics alone needs no ray
-    if (k == 1) {  // the statistics model the field's own shadows: only the other objects are tested
+    if (k == 1) {  // Smith models the shadows of the detail finer than the traced level, this ray the rest's
       from = microsurface_flat_hit(hit, d);
       from_n = from.normal;
       offset = 1e-4;
-      fields = false;
+      lambda = field.lambda;
       lit = dot(from_n, l) > 0.0;
     }
 #endif
-    if (lit && occluded(p + from_n * (offset * max(1.0, length(p))), l, from, from_n, fields)) visibility[k] = 0.0;
+    vec3 origin = p + from_n * (offset * max(1.0, length(p)));
+    if (lit && occluded(origin, l, from, from_n, kTracesHeightFields, lambda)) visibility[k] = 0.0;
   }
 #ifdef FACET_HEIGHT_FIELDS
   if (field_hit) return microsurface_field_radiance(m, hit, field, d, n, l, visibility);

@@ -7,11 +7,13 @@
 #include "render/trace.glsl"
 #include "render/variant_code.glsl"
 
-// Where a field hit is shaded from: the pixel's footprint around it, and the weight w of its traced
-// shading (1 but for filtered, which blends toward the statistics from two texels on, (T1)).
+// Where a field hit is shaded from: the pixel's footprint around it, the weight w of its traced
+// shading (1 but for filtered, which blends toward the statistics from two texels on, (T1)), and the
+// level lambda the camera ray traced the field at (T2), through which the statistics' light is traced.
 struct MicrosurfaceFieldSample {
   MicrosurfaceFootprint fp;
   float w;
+  float lambda;
 };
 
 MicrosurfaceFieldSample microsurface_field_sample(GpuMaterial m, Hit hit, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy) {
@@ -20,12 +22,17 @@ MicrosurfaceFieldSample microsurface_field_sample(GpuMaterial m, Hit hit, vec3 o
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
   if (kTextureMethod >= 3u) fp = microsurface_footprint_on_surface(m, plane, o, d, p, d_dx, d_dy, fp);
 #endif
-  return MicrosurfaceFieldSample(fp, kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0);
+  float lambda = 0.0;
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+  if (kTextureMethod >= 3u) lambda = microsurface_trace_level(m, plane, o, d, d_dx, d_dy);
+#endif
+  return MicrosurfaceFieldSample(fp, kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0, lambda);
 }
 
 // The hit as the flat rectangle's, its normal facing the ray d: where filtered's statistics' shadow ray
-// starts (they model the shadows of the detail inside the footprint, Smith, so that ray is only tested
-// against the other objects).
+// starts, offset along that normal (above the field, a graph over the rectangle). It meets the other
+// objects and the field smoothed to the traced level: Smith models the shadows of the detail inside the
+// footprint, the ray those the surface beyond it casts (docs/microsurface_filtering.md, "Shadows").
 Hit microsurface_flat_hit(Hit hit, vec3 d) {
   vec3 normal = plane_at(hit.index).normal.xyz;
   return Hit(hit.t, dot(normal, d) > 0.0 ? -normal : normal, hit.material, kPlane, hit.index, vec2(0.0));
@@ -34,7 +41,7 @@ Hit microsurface_flat_hit(Hit hit, vec3 d) {
 // naive (ss:K): the hit as the reference shades a sample, its light through every field (a field
 // shadows itself) and the other objects: visibility.x, which the caller traces when s.w > 0.
 // filtered: the same where the footprint is within a texel; from two texels on the footprint's
-// statistics around the traced hit, lit by visibility.y, the flat rectangle's shadow ray; a blend
+// statistics around the traced hit, lit by visibility.y, the ray through the smoothed field; a blend
 // between (T1). n: the hit's micro-normal facing the viewer.
 vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample s, vec3 d, vec3 n, vec3 l,
                                  vec2 visibility) {

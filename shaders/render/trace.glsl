@@ -129,8 +129,9 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
 // stops at the first occluder. Two primitives are skipped because they provably cannot block it: the
 // plane `from` lies on (the ray leaves it and never returns), and `from`'s sphere when the ray leaves
 // its outside (a convex body lies entirely behind its tangent plane; from inside, n points inwards
-// and the far wall does block).
-bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields) {
+// and the far wall does block). With `fields`, microsurfaces' height fields are traced, smoothed to
+// level lambda (T2; 0: the fields themselves).
+bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float lambda) {
   uint skip_plane = from.primitive == kPlane ? from.index : kNoHit;
   uint skip_sphere = from.primitive == kSphere && dot(from.normal, n) > 0.0 ? from.index : kNoHit;
   for (uint i = 0u; i < globals.counts.x; ++i) {
@@ -138,7 +139,7 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields) {
 #ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(plane, fields)) {  // a field shadows itself: never skipped
       vec2 q;
-      if (trace_height_field(i, o, l, kInfinity, 0.0, q) > 0.0) return true;
+      if (trace_height_field(i, o, l, kInfinity, lambda, q) > 0.0) return true;
       continue;
     }
 #endif
