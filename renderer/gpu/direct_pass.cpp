@@ -44,11 +44,13 @@ const Scene& runnable(const Scene& scene, const RenderMethod& method) {
     if (!m || !plane.size) continue;
     nodes += heightfield_trace_cost(*m, *plane.size).nodes;
   }
-  if (nodes > FACET_HEIGHTFIELD_MAX_STEPS)
+  // Camera and shadow ray; filtered adds its statistics' shadow ray through the smoothed field (T5).
+  const int rays_per_sample = method.texture >= RenderMethod::Texture::Filtered ? 3 : 2;
+  const std::int64_t bound = FACET_HEIGHTFIELD_SAMPLE_STEPS / rays_per_sample;
+  if (nodes > bound)
     throw Error("the microsurfaces' height fields span too many texels for the GPU tracer: a ray may visit " +
-                std::to_string(nodes) + " MIP nodes, more than its loop bound of " +
-                std::to_string(FACET_HEIGHTFIELD_MAX_STEPS) +
-                " (use coarser texels, a smaller rectangle or --method mip)");
+                std::to_string(nodes) + " MIP nodes, more than its loop bound of " + std::to_string(bound) +
+                " for " + method.name() + " (use coarser texels, a smaller rectangle or --method mip)");
   return scene;
 }
 

@@ -42,8 +42,8 @@ std::size_t microsurface_texels(const MicrosurfaceMaterial& material);
 uint heightfield_bound_span(int width, int height);
 
 // What tracing the material's field over a rectangle of patch_size costs the GPU tracer: an upper
-// bound on the MIP nodes one ray visits (at most FACET_HEIGHTFIELD_MAX_STEPS loop steps in all fields
-// of a scene).
+// bound on the MIP nodes one ray visits (in all fields of a scene, at most a method's share of
+// FACET_HEIGHTFIELD_SAMPLE_STEPS: renderer/gpu/direct_pass.cpp).
 struct HeightFieldTraceCost {
   std::int64_t nodes = 0;
 };

@@ -57,9 +57,12 @@ struct GpuBvhNode {
 #define FACET_NO_COLORMAP 0xffffffffu    // a microsurface without this colour-map factor
 #define FACET_MATERIAL_DIFFRACTION 4u  // kind.y: index into diffraction_materials (render/diffraction_shading.glsl)
 
-// Quadtree nodes the height-field rays of one sample may visit on the GPU, per ray (camera, shadow;
-// render/heightfield_trace.glsl): both leave ~9500 of lavapipe's 65535 loop iterations per invocation
-// to the rest of the pass.
+// Quadtree nodes the height-field rays of one sample may visit on the GPU (render/heightfield_trace.glsl),
+// in all: they leave ~9500 of lavapipe's 65535 loop iterations per invocation to the rest of the pass.
+// A sample casts two such rays (camera, shadow), filtered's three (its statistics' shadow ray through
+// the smoothed field, T5), so the pass refuses fields whose bound per ray passes the share of its method
+// (renderer/gpu/direct_pass.cpp). FACET_HEIGHTFIELD_MAX_STEPS caps one ray's loop.
+#define FACET_HEIGHTFIELD_SAMPLE_STEPS 56000
 #define FACET_HEIGHTFIELD_MAX_STEPS 28000
 
 struct GpuMaterial {
