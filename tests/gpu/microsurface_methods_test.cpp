@@ -20,11 +20,11 @@ constexpr int kReferenceGrid = 12;
 
 Scene scene(const std::string& name) { return load_scene(std::string(FACET_SOURCE_DIR) + "/scenes/" + name + ".json"); }
 
-Image reference(const Scene& s) {
+Image reference(const Scene& s, int w = kWidth, int h = kHeight, int grid = kReferenceGrid) {
   cpu::ReferenceOptions options;
-  options.width = kWidth;
-  options.height = kHeight;
-  options.grid = kReferenceGrid;
+  options.width = w;
+  options.height = h;
+  options.grid = grid;
   options.seed = 3;
   return cpu::render_reference(s, options);
 }
@@ -105,12 +105,7 @@ TEST(MicrosurfaceMethods, GlossyFilteredIsCloseToTheReference) {
 TEST(MicrosurfaceMethods, FilteredFootprintLiesOnTheTracedSurface) {
   auto context = test::make_validated_context();
   const Scene s = scene("microsurface_slope");
-  cpu::ReferenceOptions options;
-  options.width = 160;
-  options.height = 90;
-  options.grid = 8;
-  options.seed = 3;
-  const double e = rmse(render(*context, s, "filtered", 160, 90), cpu::render_reference(s, options));
+  const double e = rmse(render(*context, s, "filtered", 160, 90), reference(s, 160, 90, 8));
   std::printf("slope 160x90 filtered RMSE %.4f\n", e);
   EXPECT_LT(e, 0.033);
   EXPECT_EQ(context->validation_message_count(), 0u);
@@ -145,12 +140,7 @@ TEST(MicrosurfaceMethods, FilteredPerStratumConverges) {
 TEST(MicrosurfaceMethods, StatisticsAreShadowedByTheTracedSurface) {
   auto context = test::make_validated_context();
   const Scene s = scene("microsurface_steep");
-  cpu::ReferenceOptions options;
-  options.width = 160;
-  options.height = 90;
-  options.grid = 8;
-  options.seed = 3;
-  const Image ref = cpu::render_reference(s, options);
+  const Image ref = reference(s, 160, 90, 8);
   const double filtered = row_mean_error(render(*context, s, "filtered", 160, 90), ref);
   const double naive = row_mean_error(render(*context, s, "naive", 160, 90), ref);
   std::printf("steep 160x90 row-mean error: filtered %.4f naive %.4f\n", filtered, naive);
