@@ -103,6 +103,15 @@ ColormapKnot colormap_knot_coarse(float z) {
   return z >= 0.0 ? ColormapKnot(Phi_pos, Phi_neg, G_pos, G_neg) : ColormapKnot(Phi_neg, Phi_pos, G_neg, G_pos);
 }
 
+// P(t < x_k) and P(t > x_k) for t ~ N(m, s^2), z = (x_k - m)/s, from one coarse tail (as colormap_knot_coarse,
+// without G): each is the tail itself on its small side and 1 - the tail on the other, so neither is a
+// difference of two numbers near 1. The step maps' sums weigh their jumps and steps with these.
+vec2 colormap_below_above(float z) {
+  float x = abs(z);
+  float tail = sf_normal_tail_coarse(x, exp(-0.5 * min(x * x, 1e30)));
+  return z > 0.0 ? vec2(1.0 - tail, tail) : vec2(tail, 1.0 - tail);
+}
+
 // The first control point in [first, last] whose position exceeds `position` (last if none).
 uint colormap_first_point_above(uint first, uint last, float position) {
   uint lo = first, hi = last;  // the answer lies in [lo, hi]; hi = last when no point is above
@@ -217,9 +226,7 @@ vec3 colormap_steps_filtered(GpuColormap map, float m, float s, bool steps) {
     vec4 p = colormap_point(k);
     float z = colormap_standardize(p.w, m, s);
     if (z > kColormapReach) break;
-    float x = abs(z);
-    float tail = sf_normal_tail_coarse(x, exp(-0.5 * min(x * x, 1e30)));
-    mean += (z > 0.0 ? tail : 1.0 - tail) * (p.rgb - before);
+    mean += colormap_below_above(z).y * (p.rgb - before);
     before = p.rgb;
   }
   return mean;
@@ -349,13 +356,11 @@ vec3 colormap_steps_second_moment(GpuColormap map, float m, float s, vec3 mean, 
   for (uint k = first + 1u; k <= last; ++k) {
     vec4 p = colormap_point(k);
     float z = colormap_standardize(p.w, m, s);
-    float x = abs(z);
-    float tail = sf_normal_tail_coarse(x, exp(-0.5 * min(x * x, 1e30)));
-    float below = z > 0.0 ? 1.0 - tail : tail, above = z > 0.0 ? tail : 1.0 - tail;
-    second += step * step * max(z > 0.0 ? above_step - above : below - below_step, 0.0);
+    vec2 below_above = colormap_below_above(z);
+    second += step * step * max(z > 0.0 ? above_step - below_above.y : below_above.x - below_step, 0.0);
     step = p.rgb - mean;
-    below_step = below;
-    above_step = above;
+    below_step = below_above.x;
+    above_step = below_above.y;
     if (z > kColormapReach) break;
   }
   return second + step * step * above_step;
