@@ -90,8 +90,9 @@ vec3 camera_ray(vec2 film) {
 }
 
 // Radiance of the hit `hit` of the camera ray o + t d through `film` (pixels); `pixel_step` is the film
-// distance to the neighbouring rays whose hits span the texture footprint.
-vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
+// distance to the neighbouring rays whose hits span the texture footprint; field_lambda: the level a
+// field hit was traced at (trace()).
+vec3 shade(vec3 o, vec3 d, Hit hit, float field_lambda, vec2 film, float pixel_step) {
   if (hit.material == kNoHit) return globals.background.rgb;
   vec3 p = o + hit.t * d;
   vec3 n = normalize(hit.normal);
@@ -103,7 +104,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   MicrosurfaceFieldSample field;
   field_hit = kHasMicrosurface && hit.primitive == kHeightField;
   if (field_hit)
-    field = microsurface_field_sample(m, hit, o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
+    field = microsurface_field_sample(m, hit, field_lambda, o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
                                       camera_ray(film + vec2(0.0, pixel_step)));
 #endif
   // One call of occluded() casts every shadow ray (each call of the height-field traversal is compiled
@@ -182,8 +183,9 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
 vec4 radiance(vec2 film, float pixel_step) {
   vec3 o = globals.camera_origin.xyz;
   vec3 d = camera_ray(film);
+  float field_lambda;
   Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields, kTextureMethod >= 3u,
-                  camera_ray(film + vec2(pixel_step, 0.0)), camera_ray(film + vec2(0.0, pixel_step)));
+                  camera_ray(film + vec2(pixel_step, 0.0)), camera_ray(film + vec2(0.0, pixel_step)), field_lambda);
   if (kWritesAovs && hit.material != kNoHit) {
     vec3 n = normalize(hit.normal);
     aov_depth_normal = vec4(hit.t * dot(d, globals.camera_forward.xyz), dot(n, d) > 0.0 ? -n : n);
@@ -191,7 +193,7 @@ vec4 radiance(vec2 film, float pixel_step) {
     if (material_at(hit.material).kind.x != FACET_MATERIAL_MICROSURFACE)
       aov_uv_error.xy = surface_uv(hit, o + hit.t * d).uv;
   }
-  return vec4(shade(o, d, hit, film, pixel_step), hit.material == kNoHit ? 0.0 : 1.0);
+  return vec4(shade(o, d, hit, field_lambda, film, pixel_step), hit.material == kNoHit ? 0.0 : 1.0);
 }
 
 // filtered:adaptive's refinement renders listed pixels (tile.list.x > 0) anywhere in the frame.

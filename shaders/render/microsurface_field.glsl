@@ -16,15 +16,13 @@ struct MicrosurfaceFieldSample {
   float lambda;
 };
 
-MicrosurfaceFieldSample microsurface_field_sample(GpuMaterial m, Hit hit, vec3 o, vec3 d, vec3 p, vec3 d_dx, vec3 d_dy) {
+// lambda: the level trace() traced the hit's field at.
+MicrosurfaceFieldSample microsurface_field_sample(GpuMaterial m, Hit hit, float lambda, vec3 o, vec3 d, vec3 p,
+                                                  vec3 d_dx, vec3 d_dy) {
   GpuPlane plane = plane_at(hit.index);
   MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy, plane.normal.xyz);
-  float lambda = 0.0;
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
-  if (kTextureMethod >= 3u) {
-    fp = microsurface_footprint_on_surface(m, plane, o, d, p, d_dx, d_dy, fp);
-    lambda = microsurface_trace_level(m, plane, o, d, d_dx, d_dy);
-  }
+  if (kTextureMethod >= 3u) fp = microsurface_footprint_on_surface(m, plane, o, d, p, d_dx, d_dy, fp);
 #endif
   return MicrosurfaceFieldSample(fp, kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0, lambda);
 }

@@ -87,9 +87,11 @@ bool inside_plane_rectangle(GpuPlane plane, vec3 p) {
 }
 
 // With `smoothed` (filtered), each field is traced at the level its footprint spans (T2), from the
-// rays d_dx, d_dy through the neighbouring pixels.
-Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, vec3 d_dx, vec3 d_dy) {
+// rays d_dx, d_dy through the neighbouring pixels; field_lambda: the level of the hit when it is a field's.
+Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, vec3 d_dx, vec3 d_dy,
+          out float field_lambda) {
   Hit hit = Hit(t_max, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0));
+  field_lambda = 0.0;
   for (uint i = 0u; i < globals.counts.x; ++i) {
     GpuPlane plane = plane_at(i);
 #ifdef FACET_HEIGHT_FIELDS
@@ -105,6 +107,7 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
         vec3 s = heightfield_point(heightfield_quads(m), q, m.albedo.w);
         vec3 normal = plane.normal.xyz - s.y * plane.tangent.xyz - s.z * cross(plane.normal.xyz, plane.tangent.xyz);
         hit = Hit(t, normal, plane.material.x, kHeightField, i, q);
+        field_lambda = lambda;
       }
       continue;
     }
