@@ -6,7 +6,9 @@
 #include <limits>
 #include <numbers>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <boost/align/aligned_allocator.hpp>
 
 #include "common/error.hpp"
 #include "common/format_mib.hpp"
@@ -114,26 +116,144 @@ AxisWindows axis_windows(const SpectralTables& t, const std::vector<WavelengthPo
   return w;
 }
 
-// Adds weight k^2 sum_{n+n'=p} Re(b_n conj b_n') to T'_p, the coefficient of w^p (eq. F.4'), at the
-// nodes (u, v) of one row for one wavelength at a time, with b_n = (i k h_s)^n / n! C_n. The pairs
-// (n, n') and (n', n) are conjugates, so their imaginary parts cancel. The window separates
-// (e_j = e_x(j_x) e_y(j_y), eq. F.2), so C_n = sum_{j_x} e_x(j_x) G_n(j_x) with G_n(j_x) =
-// sum_{j_y} e_y(j_y) H_n(j): G is summed once per row and wavelength over the bin columns the row's
-// windows reach, and a node then sums 2r + 1 columns instead of (2r + 1)^2 bins. Complex products are
-// written out (std::complex's guard against inf/NaN costs a call each).
+// The build integrates kLanes nodes of a row side by side, one per lane of a vector of doubles (GCC and
+// Clang lower it to what the host has).
+constexpr int kLanes = 8;
+using Lanes = double __attribute__((vector_size(kLanes * sizeof(double)), may_alias));
+// Doubles read as Lanes, aligned to a whole vector, which a clone's loads may assume (every Lanes read
+// starts a whole number of Lanes into such a buffer). Not alignof(Lanes): compiled for x86-64's baseline
+// it is 16, while the AVX-512 clone aligns to 64.
+using LaneWords = std::vector<double, boost::alignment::aligned_allocator<double, sizeof(Lanes)>>;
+
+// The loops over lanes run in clones for AVX2 and AVX-512 hosts (4 and 8 doubles an instruction instead
+// of x86-64's 2). Every clone runs the same operations in the same order (the file is compiled without
+// contraction into FMAs), so the tables are the same to the bit on every host.
+#define FACET_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+
+// What one wavelength adds to a group's nodes: per lane, the window weights e_x (null for a lane the
+// wavelength skips or past the row's end), and where G of the window's first column and the liveness of
+// its columns are (RowIntegrator). The columns are [d stride + n], d < width (integrate_group).
+struct GroupWindows {
+  const double* e[kLanes];
+  const double* g_re[kLanes];
+  const double* g_im[kLanes];
+  const char* g_live[kLanes];
+};
+
+// The 8 x 8 block rows[0..8) transposed into columns[0..8) (columns[j][i] = rows[i][j]): three rounds of
+// two-vector shuffles, which every vector width has, instead of 64 moves through memory (inlined into
+// each clone of its caller).
+[[gnu::always_inline]] inline void transpose_lanes(const Lanes* rows, Lanes* columns) {
+  static_assert(kLanes == 8);
+  Lanes t[8], u[8];
+  for (int i = 0; i < 8; i += 2) {
+    t[i] = __builtin_shufflevector(rows[i], rows[i + 1], 0, 8, 2, 10, 4, 12, 6, 14);
+    t[i + 1] = __builtin_shufflevector(rows[i], rows[i + 1], 1, 9, 3, 11, 5, 13, 7, 15);
+  }
+  for (int i = 0; i < 8; i += 4)
+    for (int j = 0; j < 2; ++j) {
+      u[i + j] = __builtin_shufflevector(t[i + j], t[i + j + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+      u[i + j + 2] = __builtin_shufflevector(t[i + j], t[i + j + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+    }
+  for (int j = 0; j < 4; ++j) {
+    columns[j] = __builtin_shufflevector(u[j], u[j + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+    columns[j + 4] = __builtin_shufflevector(u[j], u[j + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+}
+
+// Eq. F.4' at one wavelength for kLanes nodes: C_n = sum_d e_x(d) G_n(d) over each node's live columns
+// (eq. F.2'), the Taylor coefficients b_n = i^n power_n C_n, their products q_p = sum_{n+n'=p}
+// Re(b_n conj b_n') (the pairs (n, n') and (n', n) are conjugates, so their imaginary parts cancel),
+// added with weight w3 (k^2 times the wavelength's colour weight) to each node's T'_p, the coefficient
+// of w^p (T: [c (2N - 1) + p] for colour channel c, a Lanes each). Each lane runs one node's operations
+// in one node's order: the same tables as a node at a time, without its short loops over the products'
+// ragged rows. A lane with no live column has C = 0 and adds +-0, which leaves its T as it was (T never
+// holds -0: it starts at +0 and sums are +0 where they cancel). Scratch: 6N + 4 stride Lanes (stride < N + 8).
+FACET_VECTOR_CLONES void integrate_group(const GroupWindows& w, int N, int width, const double* power, const double* w3,
+                                         Lanes* scratch, Lanes* T) {
+  Lanes* b_re = scratch;
+  Lanes* b_im = b_re + N;
+  Lanes* re2 = b_im + N;  // 2 b_n
+  Lanes* im2 = re2 + N;
+  Lanes* q = im2 + N;
+  // C of lane L at [L stride + n] (doubles), stride = N rounded up to whole vectors, as G's columns: the
+  // window sums run whole vectors, with none of the remainder loops a vectorised loop over N < 16 has.
+  const int stride = (N + kLanes - 1) / kLanes * kLanes, vectors = stride / kLanes;
+  Lanes* c_re = q + 2 * N;
+  Lanes* c_im = c_re + stride;
+  bool any = false;
+  for (int L = 0; L < kLanes; ++L)
+    for (int k = 0; k < vectors; ++k) {
+      Lanes sum_re{}, sum_im{};
+      for (int d = 0; w.e[L] != nullptr && d < width; ++d)
+        if (w.g_live[L][d]) {
+          any = true;
+          sum_re += w.e[L][d] * reinterpret_cast<const Lanes*>(w.g_re[L] + d * stride)[k];
+          sum_im += w.e[L][d] * reinterpret_cast<const Lanes*>(w.g_im[L] + d * stride)[k];
+        }
+      c_re[L * vectors + k] = sum_re;
+      c_im[L * vectors + k] = sum_im;
+    }
+  if (!any) return;
+  Lanes* by_term_re = c_im + stride;  // C_n of every lane at [n]
+  Lanes* by_term_im = by_term_re + stride;
+  for (int k = 0; k < vectors; ++k) {
+    Lanes rows_re[kLanes], rows_im[kLanes];
+    for (int L = 0; L < kLanes; ++L) rows_re[L] = c_re[L * vectors + k], rows_im[L] = c_im[L * vectors + k];
+    transpose_lanes(rows_re, by_term_re + k * kLanes);
+    transpose_lanes(rows_im, by_term_im + k * kLanes);
+  }
+  for (int n = 0; n < N; ++n) {
+    const Lanes re = power[n] * by_term_re[n], im = power[n] * by_term_im[n];
+    switch (n & 3) {  // i^n: a quarter turn per n
+      case 0:
+        b_re[n] = re, b_im[n] = im;
+        break;
+      case 1:
+        b_re[n] = -im, b_im[n] = re;
+        break;
+      case 2:
+        b_re[n] = -re, b_im[n] = -im;
+        break;
+      default:
+        b_re[n] = im, b_im[n] = -re;
+        break;
+    }
+    re2[n] = 2.0 * b_re[n];
+    im2[n] = 2.0 * b_im[n];
+  }
+  // q_p in one register: its pairs n < p - n in increasing n, then the square of b_{p/2}.
+  const int terms = 2 * N - 1;
+  for (int p = 0; p < terms; ++p) {
+    Lanes sum{};
+    for (int n = p < N ? 0 : p - N + 1; n < p - n; ++n) sum += re2[n] * b_re[p - n] + im2[n] * b_im[p - n];
+    if (p % 2 == 0) sum += b_re[p / 2] * b_re[p / 2] + b_im[p / 2] * b_im[p / 2];
+    q[p] = sum;
+  }
+  for (int c = 0; c < 3; ++c)
+    for (int p = 0; p < terms; ++p) T[c * terms + p] += w3[c] * q[p];
+}
+
+// One row's nodes (u, v), with b_n = (i k h_s)^n / n! C_n. The window separates (e_j = e_x(j_x)
+// e_y(j_y), eq. F.2), so C_n = sum_{j_x} e_x(j_x) G_n(j_x) with G_n(j_x) = sum_{j_y} e_y(j_y) H_n(j): G
+// is summed once per row and wavelength over the bin columns the row's windows reach, and
+// a node then sums 2r + 1 columns instead of (2r + 1)^2 bins. Complex products are written out
+// (std::complex's guard against inf/NaN costs a call each).
 class RowIntegrator {
  public:
   explicit RowIntegrator(const SpectralTables& t, const std::vector<char>& live)
-      : t_(t), live_(live), c_re_(t.N), c_im_(t.N), b_re_(t.N), b_im_(t.N), q_(2 * t.N - 1) {}
+      : t_(t), live_(live), stride_((t.N + kLanes - 1) / kLanes * kLanes), scratch_((6 * t.N + 4 * stride_) * kLanes) {}
 
   // G over the bin columns jx_first..jx_last for the row window y at (iv, wavelength). Only live bins
   // are summed; a column without any is marked dead, so a node whose window holds no live bin is skipped.
-  void set_row_window(const AxisWindows& y, size_t y_at, int jx_first, int jx_last) {
+  // Returns whether any column is live (a periodic grating's power lies on its lattice, which most rows'
+  // windows miss at most wavelengths).
+  bool set_row_window(const AxisWindows& y, size_t y_at, int jx_first, int jx_last) {
     const int N = t_.N, r = t_.r;
     const size_t columns = static_cast<size_t>(jx_last - jx_first + 1);
     first_ = jx_first;
-    g_re_.assign(columns * N, 0.0);
-    g_im_.assign(columns * N, 0.0);
+    g_re_.assign(columns * stride_, 0.0);
+    g_im_.assign(columns * stride_, 0.0);
     g_live_.assign(columns, 0);
     const double* ey = &y.e[y_at * y.width];
     const int jy0 = y.j0[y_at];
@@ -145,70 +265,47 @@ class RowIntegrator {
         g_live_[c] = 1;
         const double e = ey[dy + r], sign = bin.conjugate ? -e : e;
         const Complex* H = &t_.coefficients[static_cast<size_t>(bin.index) * t_.stored_terms];  // N contiguous terms
-        double* g_re = &g_re_[c * N];
-        double* g_im = &g_im_[c * N];
+        double* g_re = &g_re_[c * stride_];
+        double* g_im = &g_im_[c * stride_];
         for (int n = 0; n < N; ++n) {
           g_re[n] += e * H[n].real();
           g_im[n] += sign * H[n].imag();
         }
       }
+    live_before_.assign(columns + 1, 0);
+    for (size_t c = 0; c < columns; ++c) live_before_[c + 1] = live_before_[c] + g_live_[c];
+    return live_before_[columns] > 0;
   }
 
-  // The node whose column window x is at (iu, wavelength), into its T'_p.
-  void add(const AxisWindows& x, size_t x_at, const WavelengthPowers& s, glm::dvec3 weight, glm::dvec3* T) {
-    const int N = t_.N, width = x.width;
-    const size_t c0 = static_cast<size_t>(x.j0[x_at] - t_.r - first_);
-    const double* ex = &x.e[x_at * width];
-    std::fill(c_re_.begin(), c_re_.end(), 0.0);
-    std::fill(c_im_.begin(), c_im_.end(), 0.0);
-    bool live = false;
-    for (int d = 0; d < width; ++d) {
-      if (!g_live_[c0 + d]) continue;
-      live = true;
-      const double e = ex[d];
-      const double* g_re = &g_re_[(c0 + d) * N];
-      const double* g_im = &g_im_[(c0 + d) * N];
-      for (int n = 0; n < N; ++n) {
-        c_re_[n] += e * g_re[n];
-        c_im_[n] += e * g_im[n];
-      }
-    }
-    if (!live) return;
-    // b_n = i^n power_n C_n: i^n rotates by a quarter turn per n.
-    for (int n = 0; n < N; ++n) {
-      const double re = s.power[n] * c_re_[n], im = s.power[n] * c_im_[n];
-      switch (n & 3) {
-        case 0:
-          b_re_[n] = re, b_im_[n] = im;
-          break;
-        case 1:
-          b_re_[n] = -im, b_im_[n] = re;
-          break;
-        case 2:
-          b_re_[n] = -re, b_im_[n] = -im;
-          break;
-        default:
-          b_re_[n] = im, b_im_[n] = -re;
-          break;
-      }
-    }
-    std::fill(q_.begin(), q_.end(), 0.0);
-    for (int n = 0; n < N; ++n) {
-      q_[2 * n] += b_re_[n] * b_re_[n] + b_im_[n] * b_im_[n];
-      const double re2 = 2.0 * b_re_[n], im2 = 2.0 * b_im_[n];
-      for (int np = n + 1; np < N; ++np) q_[n + np] += re2 * b_re_[np] + im2 * b_im_[np];
+  // Whether any of the bin columns jx_lo..jx_hi (within the row window's) holds a live bin.
+  bool any_live(int jx_lo, int jx_hi) const { return live_before_[jx_hi + 1 - first_] > live_before_[jx_lo - first_]; }
+
+  // Wavelength s (colour weight `weight`) at the kLanes nodes whose column windows x are at x_at (iu,
+  // wavelength), each unless counted[L] is false, into their T'_p (integrate_group's layout).
+  void add(const AxisWindows& x, const size_t* x_at, const bool* counted, const WavelengthPowers& s, glm::dvec3 weight,
+           Lanes* T) {
+    GroupWindows w{};
+    for (int L = 0; L < kLanes; ++L) {
+      if (!counted[L]) continue;
+      const size_t c0 = static_cast<size_t>(x.j0[x_at[L]] - t_.r - first_);
+      w.e[L] = &x.e[x_at[L] * x.width];
+      w.g_re[L] = &g_re_[c0 * stride_];
+      w.g_im[L] = &g_im_[c0 * stride_];
+      w.g_live[L] = &g_live_[c0];
     }
     const glm::dvec3 w3 = weight * (s.k * s.k);
-    for (size_t p = 0; p < q_.size(); ++p) T[p] += w3 * q_[p];
+    integrate_group(w, t_.N, x.width, s.power.data(), &w3[0], reinterpret_cast<Lanes*>(scratch_.data()), T);
   }
 
  private:
   const SpectralTables& t_;
   const std::vector<char>& live_;
-  std::vector<double> c_re_, c_im_, b_re_, b_im_, q_;
-  int first_ = 0;                    // the bin column of G's first
-  std::vector<double> g_re_, g_im_;  // [(jx - first_) * N + n]
-  std::vector<char> g_live_;         // per column: whether it holds a live bin
+  int stride_;                    // G's column stride: N rounded up to whole Lanes (integrate_group)
+  LaneWords scratch_;             // integrate_group's
+  int first_ = 0;                 // the bin column of G's first
+  LaneWords g_re_, g_im_;         // [(jx - first_) * stride_ + n], 0 past N
+  std::vector<char> g_live_;      // per column: whether it holds a live bin
+  std::vector<int> live_before_;  // live columns before each
 };
 
 PreintegratedGrid kernel_grid(const PreintegratedTables& t) {
@@ -304,47 +401,69 @@ void build_preintegrated_words(const SpectralTables& tables, const WavelengthSam
   const std::vector<char> live = live_bins(tables);
   const size_t nodes = static_cast<size_t>(t.nu) * t.nv;
   std::vector<glm::dvec3> T(nodes * t.terms, glm::dvec3(0.0));
+  std::vector<double> row_largest(static_cast<size_t>(t.nv) * t.terms, 0.0);  // max |T'_p| channel of each row
   const AxisWindows columns = axis_windows(tables, powers, 0, t.origin.x, t.spacing.x, t.nu);
   tbb::parallel_for(0, t.nv, [&](int iv) {
     RowIntegrator integrator(tables, live);
     const AxisWindows row = axis_windows(tables, powers, 1, t.origin.y + iv * t.spacing.y, 0.0, 1);
-    std::vector<glm::dvec3> sums(static_cast<size_t>(t.nu) * t.terms, glm::dvec3(0.0));  // T'_p of the row's nodes
+    // The row's T'_p, kLanes nodes after kLanes nodes (integrate_group's layout).
+    const size_t group_sums = static_cast<size_t>(3) * t.terms;
+    LaneWords sum_words(group_sums * ((t.nu + kLanes - 1) / kLanes) * kLanes, 0.0);
+    Lanes* sums = reinterpret_cast<Lanes*>(sum_words.data());
     for (size_t i = 0; i < powers.size(); ++i) {
       const size_t y_at = row.at(i, 0);
       // j0 grows with u: the row's windows reach the columns from the first node's to the last's.
-      integrator.set_row_window(row, y_at, columns.j0[columns.at(i, 0)] - tables.r,
-                                columns.j0[columns.at(i, t.nu - 1)] + tables.r);
-      for (int iu = 0; iu < t.nu; ++iu)
-        if (columns.sum[columns.at(i, iu)] * row.sum[y_at] >= kNegligibleWindow)
-          integrator.add(columns, columns.at(i, iu), powers[i], weights[i], &sums[static_cast<size_t>(iu) * t.terms]);
+      if (!integrator.set_row_window(row, y_at, columns.j0[columns.at(i, 0)] - tables.r,
+                                     columns.j0[columns.at(i, t.nu - 1)] + tables.r))
+        continue;
+      for (int group = 0; group < t.nu; group += kLanes) {
+        const int last = std::min(group + kLanes, t.nu) - 1;
+        if (!integrator.any_live(columns.j0[columns.at(i, group)] - tables.r,
+                                 columns.j0[columns.at(i, last)] + tables.r))
+          continue;
+        size_t x_at[kLanes];
+        bool counted[kLanes];
+        for (int L = 0; L < kLanes; ++L) {
+          x_at[L] = columns.at(i, std::min(group + L, last));
+          counted[L] = group + L < t.nu && columns.sum[x_at[L]] * row.sum[y_at] >= kNegligibleWindow;
+        }
+        integrator.add(columns, x_at, counted, powers[i], weights[i], &sums[group / kLanes * group_sums]);
+      }
     }
     for (int iu = 0; iu < t.nu; ++iu) {
-      const glm::dvec3* node = &sums[static_cast<size_t>(iu) * t.terms];
+      const Lanes* node = &sums[iu / kLanes * group_sums];
+      const int L = iu % kLanes;
       glm::dvec3* out = &T[(static_cast<size_t>(iv) * t.nu + iu) * t.terms];
-      for (int q = 0; q < t.terms; ++q)
-        for (int p = q; p < t.terms; ++p) out[q] += recentre[q * t.terms + p] * node[p];
+      for (int q = 0; q < t.terms; ++q) {
+        for (int p = q; p < t.terms; ++p)
+          out[q] += recentre[q * t.terms + p] * glm::dvec3(node[p][L], node[t.terms + p][L], node[2 * t.terms + p][L]);
+        const glm::dvec3 a = glm::abs(out[q]);
+        double& most = row_largest[static_cast<size_t>(iv) * t.terms + q];
+        most = std::max({most, a.x, a.y, a.z});
+      }
     }
   });
 
   t.scale.assign(t.terms, 0.0f);
   std::vector<double> largest(t.terms, 0.0);
-  for (size_t i = 0; i < T.size(); ++i) {
-    const glm::dvec3 a = glm::abs(T[i]);
-    largest[i % t.terms] = std::max({largest[i % t.terms], a.x, a.y, a.z});
-  }
+  for (int iv = 0; iv < t.nv; ++iv)
+    for (int p = 0; p < t.terms; ++p)
+      largest[p] = std::max(largest[p], row_largest[static_cast<size_t>(iv) * t.terms + p]);
   // High powers of delta can carry coefficients below float's range: their scale stays normal.
   for (int p = 0; p < t.terms; ++p)
     t.scale[p] = std::max(static_cast<float>(largest[p]), std::numeric_limits<float>::min());
-  for (size_t i = 0; i < T.size(); ++i) {
-    const glm::vec3 v = glm::vec3(T[i] / static_cast<double>(t.scale[i % t.terms]));
-    std::uint32_t* out = &packed[i * t.words];
-    if (t.words == 2) {
-      out[0] = glm::packHalf2x16(glm::vec2(v.x, v.y));
-      out[1] = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
-    } else {
-      for (int c = 0; c < 3; ++c) out[c] = glm::floatBitsToUint(v[c]);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, T.size()), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      const glm::vec3 v = glm::vec3(T[i] / static_cast<double>(t.scale[i % t.terms]));
+      std::uint32_t* out = &packed[i * t.words];
+      if (t.words == 2) {
+        out[0] = glm::packHalf2x16(glm::vec2(v.x, v.y));
+        out[1] = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
+      } else {
+        for (int c = 0; c < 3; ++c) out[c] = glm::floatBitsToUint(v[c]);
+      }
     }
-  }
+  });
 }
 
 glm::dvec3 evaluate_preintegrated(const PreintegratedTables& t, const glm::dvec3& wi, const glm::dvec3& wr) {
