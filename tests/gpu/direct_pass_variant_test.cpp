@@ -45,8 +45,9 @@ TEST(DirectPassVariants, EveryShippedSceneGetsASmallerVariantThatCoversIt) {
       if (v.code == FACET_CODE_ALL) ++fallbacks;
     }
   }
-  // Only the showcase mixes families no smaller variant holds (5 methods).
-  EXPECT_EQ(fallbacks, 5);
+  // Only the showcase mixes families no one-family variant holds: the every-family variant without the
+  // filtered methods takes its naive, mip and colormip, the fallback its filtered and filtered:table.
+  EXPECT_EQ(fallbacks, 2);
   EXPECT_EQ(renders, static_cast<int>(shipped_scenes().size() * kMethods.size()));
 }
 
@@ -60,7 +61,8 @@ TEST(DirectPassVariants, ScenesNeedTheirFamiliesPrimitivesAndMethods) {
   EXPECT_EQ(code("default.json", "filtered"), uint32_t{FACET_CODE_SPHERES | FACET_CODE_TRIANGLES});
   EXPECT_EQ(code("colormap_seams_cube.json", "mip"), uint32_t{FACET_CODE_TEXTURE | FACET_CODE_TRIANGLES});
   EXPECT_EQ(code("microflake_blend.json", "naive"), uint32_t{FACET_CODE_MICROFLAKE | FACET_CODE_SPHERES});
-  EXPECT_EQ(code("diffraction_plate.json", "naive"), uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_SPECTRAL});
+  EXPECT_EQ(code("diffraction_plate.json", "naive"),
+            uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_SPECTRAL});
   RenderMethod orders = RenderMethod::parse("naive");
   orders.diffraction.method = diffraction::DiffractionMethod::Orders;
   EXPECT_EQ(gpu::direct_pass_code(load_scene(kScenes / "snake_fingers.json"), orders),
@@ -90,9 +92,13 @@ TEST(DirectPassVariants, TheSmallestCoveringVariantIsChosenAndMixesGetTheFallbac
         }
       }
     }
-  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION, false).code,
+  // Mixed families: every family without the filtered methods and preintegrated tables, else everything.
+  constexpr uint32_t kEveryFamily = FACET_CODE_ALL & ~(FACET_CODE_FILTERED | FACET_CODE_DIFFRACTION_PREINTEGRATED);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION, false).code, kEveryFamily);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES, true).code, kEveryFamily);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION | FACET_CODE_FILTERED, false).code,
             uint32_t{FACET_CODE_ALL});
-  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES, true).code,
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES | FACET_CODE_FILTERED, true).code,
             uint32_t{FACET_CODE_ALL});
   EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE, false).code, uint32_t{FACET_CODE_TEXTURE});
 }
