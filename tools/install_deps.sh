@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-tools glslang-dev spirv-tools
   libglm-dev libopenexr-dev libpng-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
-  libtbb-dev libcli11-dev libboost-dev libembree-dev libfftw3-dev
+  libtbb-dev libcli11-dev libboost-dev libembree-dev libfftw3-dev libxxhash-dev
   libgtest-dev libbenchmark-dev
   openimageio-tools hyperfine
 )
