@@ -123,6 +123,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, float field_lambda, vec2 film, float pixel_s
     float offset = field_hit ? 1e-5 : 1e-4;
     bool lit = dot(n, l) > 0.0;
     float lambda = 0.0;
+    float field_skip = 0.0;
 #ifdef FACET_HEIGHT_FIELDS
     lit = lit && (!field_hit || field.w > 0.0);  // a filtered hit shaded by statistics alone needs no ray
     if (k == 1) {  // Smith models the shadows of the detail finer than the traced level, this ray the rest's
@@ -131,10 +132,15 @@ vec3 shade(vec3 o, vec3 d, Hit hit, float field_lambda, vec2 film, float pixel_s
       offset = 1e-4;
       lambda = field.lambda;
       lit = dot(from_n, l) > 0.0;
+      // S_lambda within a footprint's width of the hit is interpolated from the nodes whose moments the
+      // statistics shade (Smith covers their shadows): the ray meets the field from that far out, along the
+      // rectangle (docs/microsurface_filtering.md, "Shadows of the smoothed surface").
+      float across = sqrt(max(1.0 - dot(from_n, l) * dot(from_n, l), 0.01));
+      field_skip = microsurface_footprint_texels(field.fp) * m.albedo.w / across;
     }
 #endif
     vec3 origin = p + from_n * (offset * max(1.0, length(p)));
-    if (lit && occluded(origin, l, from, from_n, kTracesHeightFields, lambda)) visibility[k] = 0.0;
+    if (lit && occluded(origin, l, from, from_n, kTracesHeightFields, lambda, field_skip)) visibility[k] = 0.0;
   }
 #ifdef FACET_HEIGHT_FIELDS
   if (field_hit) return microsurface_field_radiance(m, hit, field, d, n, l, visibility);

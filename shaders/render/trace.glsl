@@ -133,8 +133,8 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
 // plane `from` lies on (the ray leaves it and never returns), and `from`'s sphere when the ray leaves
 // its outside (a convex body lies entirely behind its tangent plane; from inside, n points inwards
 // and the far wall does block). With `fields`, microsurfaces' height fields are traced, smoothed to
-// level lambda (T2; 0: the fields themselves).
-bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float lambda) {
+// level lambda (T2; 0: the fields themselves), from field_skip along the ray on (the other objects from o).
+bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float lambda, float field_skip) {
   uint skip_plane = from.primitive == kPlane ? from.index : kNoHit;
   uint skip_sphere = from.primitive == kSphere && dot(from.normal, n) > 0.0 ? from.index : kNoHit;
   for (uint i = 0u; i < globals.counts.x; ++i) {
@@ -142,7 +142,7 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float lambda) {
 #ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(plane, fields)) {  // a field shadows itself: never skipped
       vec2 q;
-      if (trace_height_field(i, o, l, kInfinity, lambda, q) > 0.0) return true;
+      if (trace_height_field(i, o + field_skip * l, l, kInfinity, lambda, q) > 0.0) return true;
       continue;
     }
 #endif
