@@ -116,52 +116,82 @@ AxisWindows axis_windows(const SpectralTables& t, const std::vector<WavelengthPo
   return w;
 }
 
-// The build integrates kLanes nodes of a row side by side, one per lane of a vector of doubles (GCC and
-// Clang lower it to what the host has).
-constexpr int kLanes = 8;
-using Lanes = double __attribute__((vector_size(kLanes * sizeof(double)), may_alias));
-// Doubles read as Lanes, aligned to a whole vector, which a clone's loads may assume (every Lanes read
-// starts a whole number of Lanes into such a buffer). Not alignof(Lanes): compiled for x86-64's baseline
-// it is 16, while the AVX-512 clone aligns to 64.
-using LaneWords = std::vector<double, boost::alignment::aligned_allocator<double, sizeof(Lanes)>>;
+// The build integrates W nodes of a row side by side, one per lane of a vector of W doubles (GCC and Clang
+// vector extensions): W = 8 where the host has AVX-512, 4 with AVX2, else 2, each the width of the host's
+// registers (a wider vector type is lowered to memory traffic, 4 to 16 times slower). Everything touching
+// the lanes is inlined into one function per width compiled for its instruction set (integrate_row_*),
+// chosen once by the CPU; the file is compiled without contraction into FMAs, so every width computes the
+// same tables to the bit.
+template <int W>
+struct LaneVector;
+template <>
+struct LaneVector<2> {
+  using type = double __attribute__((vector_size(16), may_alias));
+};
+template <>
+struct LaneVector<4> {
+  using type = double __attribute__((vector_size(32), may_alias));
+};
+template <>
+struct LaneVector<8> {
+  using type = double __attribute__((vector_size(64), may_alias));
+};
+template <int W>
+using Lanes = typename LaneVector<W>::type;
 
-// The loops over lanes run in clones for AVX2 and AVX-512 hosts (4 and 8 doubles an instruction instead
-// of x86-64's 2). Every clone runs the same operations in the same order (the file is compiled without
-// contraction into FMAs), so the tables are the same to the bit on every host.
-#define FACET_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+// Doubles read as Lanes, aligned to the widest vector, which the loads of a width's code may assume (every
+// Lanes read starts a whole number of Lanes into such a buffer).
+using LaneWords = std::vector<double, boost::alignment::aligned_allocator<double, 64>>;
+
+#define FACET_INLINE [[gnu::always_inline]] inline
 
 // What one wavelength adds to a group's nodes: per lane, the window weights e_x (null for a lane the
 // wavelength skips or past the row's end), and where G of the window's first column and the liveness of
 // its columns are (RowIntegrator). The columns are [d stride + n], d < width (integrate_group).
+template <int W>
 struct GroupWindows {
-  const double* e[kLanes];
-  const double* g_re[kLanes];
-  const double* g_im[kLanes];
-  const char* g_live[kLanes];
+  const double* e[W];
+  const double* g_re[W];
+  const double* g_im[W];
+  const char* g_live[W];
 };
 
-// The 8 x 8 block rows[0..8) transposed into columns[0..8) (columns[j][i] = rows[i][j]): three rounds of
-// two-vector shuffles, which every vector width has, instead of 64 moves through memory (inlined into
-// each clone of its caller).
-[[gnu::always_inline]] inline void transpose_lanes(const Lanes* rows, Lanes* columns) {
-  static_assert(kLanes == 8);
-  Lanes t[8], u[8];
-  for (int i = 0; i < 8; i += 2) {
-    t[i] = __builtin_shufflevector(rows[i], rows[i + 1], 0, 8, 2, 10, 4, 12, 6, 14);
-    t[i + 1] = __builtin_shufflevector(rows[i], rows[i + 1], 1, 9, 3, 11, 5, 13, 7, 15);
-  }
-  for (int i = 0; i < 8; i += 4)
-    for (int j = 0; j < 2; ++j) {
-      u[i + j] = __builtin_shufflevector(t[i + j], t[i + j + 2], 0, 1, 8, 9, 4, 5, 12, 13);
-      u[i + j + 2] = __builtin_shufflevector(t[i + j], t[i + j + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+// The W x W block rows[0..W) transposed into columns[0..W) (columns[j][i] = rows[i][j]): rounds of
+// two-vector shuffles, which every vector width has, instead of W^2 moves through memory.
+template <int W>
+FACET_INLINE void transpose_lanes(const Lanes<W>* rows, Lanes<W>* columns) {
+  if constexpr (W == 2) {
+    columns[0] = __builtin_shufflevector(rows[0], rows[1], 0, 2);
+    columns[1] = __builtin_shufflevector(rows[0], rows[1], 1, 3);
+  } else if constexpr (W == 4) {
+    const Lanes<4> t0 = __builtin_shufflevector(rows[0], rows[1], 0, 4, 2, 6);
+    const Lanes<4> t1 = __builtin_shufflevector(rows[0], rows[1], 1, 5, 3, 7);
+    const Lanes<4> t2 = __builtin_shufflevector(rows[2], rows[3], 0, 4, 2, 6);
+    const Lanes<4> t3 = __builtin_shufflevector(rows[2], rows[3], 1, 5, 3, 7);
+    columns[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    columns[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    columns[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    columns[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+  } else {
+    static_assert(W == 8);
+    Lanes<8> t[8], u[8];
+    for (int i = 0; i < 8; i += 2) {
+      t[i] = __builtin_shufflevector(rows[i], rows[i + 1], 0, 8, 2, 10, 4, 12, 6, 14);
+      t[i + 1] = __builtin_shufflevector(rows[i], rows[i + 1], 1, 9, 3, 11, 5, 13, 7, 15);
     }
-  for (int j = 0; j < 4; ++j) {
-    columns[j] = __builtin_shufflevector(u[j], u[j + 4], 0, 1, 2, 3, 8, 9, 10, 11);
-    columns[j + 4] = __builtin_shufflevector(u[j], u[j + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+    for (int i = 0; i < 8; i += 4)
+      for (int j = 0; j < 2; ++j) {
+        u[i + j] = __builtin_shufflevector(t[i + j], t[i + j + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+        u[i + j + 2] = __builtin_shufflevector(t[i + j], t[i + j + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+      }
+    for (int j = 0; j < 4; ++j) {
+      columns[j] = __builtin_shufflevector(u[j], u[j + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+      columns[j + 4] = __builtin_shufflevector(u[j], u[j + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+    }
   }
 }
 
-// Eq. F.4' at one wavelength for kLanes nodes: C_n = sum_d e_x(d) G_n(d) over each node's live columns
+// Eq. F.4' at one wavelength for W nodes: C_n = sum_d e_x(d) G_n(d) over each node's live columns
 // (eq. F.2'), the Taylor coefficients b_n = i^n power_n C_n, their products q_p = sum_{n+n'=p}
 // Re(b_n conj b_n') (the pairs (n, n') and (n', n) are conjugates, so their imaginary parts cancel),
 // added with weight w3 (k^2 times the wavelength's colour weight) to each node's T'_p, the coefficient
@@ -169,42 +199,43 @@ struct GroupWindows {
 // in one node's order: the same tables as a node at a time, without its short loops over the products'
 // ragged rows. A lane with no live column has C = 0 and adds +-0, which leaves its T as it was (T never
 // holds -0: it starts at +0 and sums are +0 where they cancel). Scratch: 6N + 4 stride Lanes (stride < N + 8).
-FACET_VECTOR_CLONES void integrate_group(const GroupWindows& w, int N, int width, const double* power, const double* w3,
-                                         Lanes* scratch, Lanes* T) {
-  Lanes* b_re = scratch;
-  Lanes* b_im = b_re + N;
-  Lanes* re2 = b_im + N;  // 2 b_n
-  Lanes* im2 = re2 + N;
-  Lanes* q = im2 + N;
+template <int W>
+FACET_INLINE void integrate_group(const GroupWindows<W>& w, int N, int width, const double* power, const double* w3,
+                                  Lanes<W>* scratch, Lanes<W>* T) {
+  Lanes<W>* b_re = scratch;
+  Lanes<W>* b_im = b_re + N;
+  Lanes<W>* re2 = b_im + N;  // 2 b_n
+  Lanes<W>* im2 = re2 + N;
+  Lanes<W>* q = im2 + N;
   // C of lane L at [L stride + n] (doubles), stride = N rounded up to whole vectors, as G's columns: the
   // window sums run whole vectors, with none of the remainder loops a vectorised loop over N < 16 has.
-  const int stride = (N + kLanes - 1) / kLanes * kLanes, vectors = stride / kLanes;
-  Lanes* c_re = q + 2 * N;
-  Lanes* c_im = c_re + stride;
+  const int stride = (N + W - 1) / W * W, vectors = stride / W;
+  Lanes<W>* c_re = q + 2 * N;
+  Lanes<W>* c_im = c_re + stride;
   bool any = false;
-  for (int L = 0; L < kLanes; ++L)
+  for (int L = 0; L < W; ++L)
     for (int k = 0; k < vectors; ++k) {
-      Lanes sum_re{}, sum_im{};
+      Lanes<W> sum_re{}, sum_im{};
       for (int d = 0; w.e[L] != nullptr && d < width; ++d)
         if (w.g_live[L][d]) {
           any = true;
-          sum_re += w.e[L][d] * reinterpret_cast<const Lanes*>(w.g_re[L] + d * stride)[k];
-          sum_im += w.e[L][d] * reinterpret_cast<const Lanes*>(w.g_im[L] + d * stride)[k];
+          sum_re += w.e[L][d] * reinterpret_cast<const Lanes<W>*>(w.g_re[L] + d * stride)[k];
+          sum_im += w.e[L][d] * reinterpret_cast<const Lanes<W>*>(w.g_im[L] + d * stride)[k];
         }
       c_re[L * vectors + k] = sum_re;
       c_im[L * vectors + k] = sum_im;
     }
   if (!any) return;
-  Lanes* by_term_re = c_im + stride;  // C_n of every lane at [n]
-  Lanes* by_term_im = by_term_re + stride;
+  Lanes<W>* by_term_re = c_im + stride;  // C_n of every lane at [n]
+  Lanes<W>* by_term_im = by_term_re + stride;
   for (int k = 0; k < vectors; ++k) {
-    Lanes rows_re[kLanes], rows_im[kLanes];
-    for (int L = 0; L < kLanes; ++L) rows_re[L] = c_re[L * vectors + k], rows_im[L] = c_im[L * vectors + k];
-    transpose_lanes(rows_re, by_term_re + k * kLanes);
-    transpose_lanes(rows_im, by_term_im + k * kLanes);
+    Lanes<W> rows_re[W], rows_im[W];
+    for (int L = 0; L < W; ++L) rows_re[L] = c_re[L * vectors + k], rows_im[L] = c_im[L * vectors + k];
+    transpose_lanes<W>(rows_re, by_term_re + k * W);
+    transpose_lanes<W>(rows_im, by_term_im + k * W);
   }
   for (int n = 0; n < N; ++n) {
-    const Lanes re = power[n] * by_term_re[n], im = power[n] * by_term_im[n];
+    const Lanes<W> re = power[n] * by_term_re[n], im = power[n] * by_term_im[n];
     switch (n & 3) {  // i^n: a quarter turn per n
       case 0:
         b_re[n] = re, b_im[n] = im;
@@ -225,7 +256,7 @@ FACET_VECTOR_CLONES void integrate_group(const GroupWindows& w, int N, int width
   // q_p in one register: its pairs n < p - n in increasing n, then the square of b_{p/2}.
   const int terms = 2 * N - 1;
   for (int p = 0; p < terms; ++p) {
-    Lanes sum{};
+    Lanes<W> sum{};
     for (int n = p < N ? 0 : p - N + 1; n < p - n; ++n) sum += re2[n] * b_re[p - n] + im2[n] * b_im[p - n];
     if (p % 2 == 0) sum += b_re[p / 2] * b_re[p / 2] + b_im[p / 2] * b_im[p / 2];
     q[p] = sum;
@@ -239,16 +270,17 @@ FACET_VECTOR_CLONES void integrate_group(const GroupWindows& w, int N, int width
 // is summed once per row and wavelength over the bin columns the row's windows reach, and
 // a node then sums 2r + 1 columns instead of (2r + 1)^2 bins. Complex products are written out
 // (std::complex's guard against inf/NaN costs a call each).
+template <int W>
 class RowIntegrator {
  public:
   explicit RowIntegrator(const SpectralTables& t, const std::vector<char>& live)
-      : t_(t), live_(live), stride_((t.N + kLanes - 1) / kLanes * kLanes), scratch_((6 * t.N + 4 * stride_) * kLanes) {}
+      : t_(t), live_(live), stride_((t.N + W - 1) / W * W), scratch_((6 * t.N + 4 * stride_) * W) {}
 
   // G over the bin columns jx_first..jx_last for the row window y at (iv, wavelength). Only live bins
   // are summed; a column without any is marked dead, so a node whose window holds no live bin is skipped.
   // Returns whether any column is live (a periodic grating's power lies on its lattice, which most rows'
   // windows miss at most wavelengths).
-  bool set_row_window(const AxisWindows& y, size_t y_at, int jx_first, int jx_last) {
+  FACET_INLINE bool set_row_window(const AxisWindows& y, size_t y_at, int jx_first, int jx_last) {
     const int N = t_.N, r = t_.r;
     const size_t columns = static_cast<size_t>(jx_last - jx_first + 1);
     first_ = jx_first;
@@ -278,14 +310,16 @@ class RowIntegrator {
   }
 
   // Whether any of the bin columns jx_lo..jx_hi (within the row window's) holds a live bin.
-  bool any_live(int jx_lo, int jx_hi) const { return live_before_[jx_hi + 1 - first_] > live_before_[jx_lo - first_]; }
+  FACET_INLINE bool any_live(int jx_lo, int jx_hi) const {
+    return live_before_[jx_hi + 1 - first_] > live_before_[jx_lo - first_];
+  }
 
-  // Wavelength s (colour weight `weight`) at the kLanes nodes whose column windows x are at x_at (iu,
+  // Wavelength s (colour weight `weight`) at the W nodes whose column windows x are at x_at (iu,
   // wavelength), each unless counted[L] is false, into their T'_p (integrate_group's layout).
-  void add(const AxisWindows& x, const size_t* x_at, const bool* counted, const WavelengthPowers& s, glm::dvec3 weight,
-           Lanes* T) {
-    GroupWindows w{};
-    for (int L = 0; L < kLanes; ++L) {
+  FACET_INLINE void add(const AxisWindows& x, const size_t* x_at, const bool* counted, const WavelengthPowers& s,
+                        glm::dvec3 weight, Lanes<W>* T) {
+    GroupWindows<W> w{};
+    for (int L = 0; L < W; ++L) {
       if (!counted[L]) continue;
       const size_t c0 = static_cast<size_t>(x.j0[x_at[L]] - t_.r - first_);
       w.e[L] = &x.e[x_at[L] * x.width];
@@ -294,7 +328,7 @@ class RowIntegrator {
       w.g_live[L] = &g_live_[c0];
     }
     const glm::dvec3 w3 = weight * (s.k * s.k);
-    integrate_group(w, t_.N, x.width, s.power.data(), &w3[0], reinterpret_cast<Lanes*>(scratch_.data()), T);
+    integrate_group<W>(w, t_.N, x.width, s.power.data(), &w3[0], reinterpret_cast<Lanes<W>*>(scratch_.data()), T);
   }
 
  private:
@@ -307,6 +341,78 @@ class RowIntegrator {
   std::vector<char> g_live_;      // per column: whether it holds a live bin
   std::vector<int> live_before_;  // live columns before each
 };
+
+// What every row of the build reads, and where it writes: T, the nodes' T'_p recentred (eq. F.3), and the
+// largest |T'_p| of each row.
+struct RowJob {
+  const SpectralTables& tables;
+  const std::vector<char>& live;
+  const std::vector<WavelengthPowers>& powers;
+  const std::vector<glm::dvec3>& weights;
+  const AxisWindows& columns;
+  const std::vector<double>& recentre;
+  const PreintegratedTables& t;
+  std::vector<glm::dvec3>& T;
+  std::vector<double>& row_largest;
+};
+
+// Row iv of the build, W nodes at a time.
+template <int W>
+FACET_INLINE void integrate_row(int iv, const RowJob& job) {
+  const SpectralTables& tables = job.tables;
+  const PreintegratedTables& t = job.t;
+  const AxisWindows& columns = job.columns;
+  RowIntegrator<W> integrator(tables, job.live);
+  const AxisWindows row = axis_windows(tables, job.powers, 1, t.origin.y + iv * t.spacing.y, 0.0, 1);
+  // The row's T'_p, W nodes after W nodes (integrate_group's layout).
+  const size_t group_sums = static_cast<size_t>(3) * t.terms;
+  LaneWords sum_words(group_sums * ((t.nu + W - 1) / W) * W, 0.0);
+  Lanes<W>* sums = reinterpret_cast<Lanes<W>*>(sum_words.data());
+  for (size_t i = 0; i < job.powers.size(); ++i) {
+    const size_t y_at = row.at(i, 0);
+    // j0 grows with u: the row's windows reach the columns from the first node's to the last's.
+    if (!integrator.set_row_window(row, y_at, columns.j0[columns.at(i, 0)] - tables.r,
+                                   columns.j0[columns.at(i, t.nu - 1)] + tables.r))
+      continue;
+    for (int group = 0; group < t.nu; group += W) {
+      const int last = std::min(group + W, t.nu) - 1;
+      if (!integrator.any_live(columns.j0[columns.at(i, group)] - tables.r, columns.j0[columns.at(i, last)] + tables.r))
+        continue;
+      size_t x_at[W];
+      bool counted[W];
+      for (int L = 0; L < W; ++L) {
+        x_at[L] = columns.at(i, std::min(group + L, last));
+        counted[L] = group + L < t.nu && columns.sum[x_at[L]] * row.sum[y_at] >= kNegligibleWindow;
+      }
+      integrator.add(columns, x_at, counted, job.powers[i], job.weights[i], &sums[group / W * group_sums]);
+    }
+  }
+  for (int iu = 0; iu < t.nu; ++iu) {
+    const Lanes<W>* node = &sums[iu / W * group_sums];
+    const int L = iu % W;
+    glm::dvec3* out = &job.T[(static_cast<size_t>(iv) * t.nu + iu) * t.terms];
+    for (int q = 0; q < t.terms; ++q) {
+      for (int p = q; p < t.terms; ++p)
+        out[q] +=
+            job.recentre[q * t.terms + p] * glm::dvec3(node[p][L], node[t.terms + p][L], node[2 * t.terms + p][L]);
+      const glm::dvec3 a = glm::abs(out[q]);
+      double& most = job.row_largest[static_cast<size_t>(iv) * t.terms + q];
+      most = std::max({most, a.x, a.y, a.z});
+    }
+  }
+}
+
+__attribute__((target("avx512f"))) void integrate_row_avx512(int iv, const RowJob& job) { integrate_row<8>(iv, job); }
+__attribute__((target("avx2"))) void integrate_row_avx2(int iv, const RowJob& job) { integrate_row<4>(iv, job); }
+void integrate_row_x86_64(int iv, const RowJob& job) { integrate_row<2>(iv, job); }
+
+// The widest the host runs.
+using RowIntegration = void (*)(int, const RowJob&);
+RowIntegration row_integrator() {
+  if (__builtin_cpu_supports("avx512f")) return integrate_row_avx512;
+  if (__builtin_cpu_supports("avx2")) return integrate_row_avx2;
+  return integrate_row_x86_64;
+}
 
 PreintegratedGrid kernel_grid(const PreintegratedTables& t) {
   return PreintegratedGrid(t.origin, t.spacing, t.nu, t.nv, t.terms, t.words);
@@ -403,46 +509,9 @@ void build_preintegrated_words(const SpectralTables& tables, const WavelengthSam
   std::vector<glm::dvec3> T(nodes * t.terms, glm::dvec3(0.0));
   std::vector<double> row_largest(static_cast<size_t>(t.nv) * t.terms, 0.0);  // max |T'_p| channel of each row
   const AxisWindows columns = axis_windows(tables, powers, 0, t.origin.x, t.spacing.x, t.nu);
-  tbb::parallel_for(0, t.nv, [&](int iv) {
-    RowIntegrator integrator(tables, live);
-    const AxisWindows row = axis_windows(tables, powers, 1, t.origin.y + iv * t.spacing.y, 0.0, 1);
-    // The row's T'_p, kLanes nodes after kLanes nodes (integrate_group's layout).
-    const size_t group_sums = static_cast<size_t>(3) * t.terms;
-    LaneWords sum_words(group_sums * ((t.nu + kLanes - 1) / kLanes) * kLanes, 0.0);
-    Lanes* sums = reinterpret_cast<Lanes*>(sum_words.data());
-    for (size_t i = 0; i < powers.size(); ++i) {
-      const size_t y_at = row.at(i, 0);
-      // j0 grows with u: the row's windows reach the columns from the first node's to the last's.
-      if (!integrator.set_row_window(row, y_at, columns.j0[columns.at(i, 0)] - tables.r,
-                                     columns.j0[columns.at(i, t.nu - 1)] + tables.r))
-        continue;
-      for (int group = 0; group < t.nu; group += kLanes) {
-        const int last = std::min(group + kLanes, t.nu) - 1;
-        if (!integrator.any_live(columns.j0[columns.at(i, group)] - tables.r,
-                                 columns.j0[columns.at(i, last)] + tables.r))
-          continue;
-        size_t x_at[kLanes];
-        bool counted[kLanes];
-        for (int L = 0; L < kLanes; ++L) {
-          x_at[L] = columns.at(i, std::min(group + L, last));
-          counted[L] = group + L < t.nu && columns.sum[x_at[L]] * row.sum[y_at] >= kNegligibleWindow;
-        }
-        integrator.add(columns, x_at, counted, powers[i], weights[i], &sums[group / kLanes * group_sums]);
-      }
-    }
-    for (int iu = 0; iu < t.nu; ++iu) {
-      const Lanes* node = &sums[iu / kLanes * group_sums];
-      const int L = iu % kLanes;
-      glm::dvec3* out = &T[(static_cast<size_t>(iv) * t.nu + iu) * t.terms];
-      for (int q = 0; q < t.terms; ++q) {
-        for (int p = q; p < t.terms; ++p)
-          out[q] += recentre[q * t.terms + p] * glm::dvec3(node[p][L], node[t.terms + p][L], node[2 * t.terms + p][L]);
-        const glm::dvec3 a = glm::abs(out[q]);
-        double& most = row_largest[static_cast<size_t>(iv) * t.terms + q];
-        most = std::max({most, a.x, a.y, a.z});
-      }
-    }
-  });
+  const RowJob job{tables, live, powers, weights, columns, recentre, t, T, row_largest};
+  const auto integrate_row = row_integrator();
+  tbb::parallel_for(0, t.nv, [&](int iv) { integrate_row(iv, job); });
 
   t.scale.assign(t.terms, 0.0f);
   std::vector<double> largest(t.terms, 0.0);
