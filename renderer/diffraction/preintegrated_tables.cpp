@@ -406,12 +406,17 @@ __attribute__((target("avx512f"))) void integrate_row_avx512(int iv, const RowJo
 __attribute__((target("avx2"))) void integrate_row_avx2(int iv, const RowJob& job) { integrate_row<4>(iv, job); }
 void integrate_row_x86_64(int iv, const RowJob& job) { integrate_row<2>(iv, job); }
 
-// The widest the host runs.
 using RowIntegration = void (*)(int, const RowJob&);
-RowIntegration row_integrator() {
-  if (__builtin_cpu_supports("avx512f")) return integrate_row_avx512;
-  if (__builtin_cpu_supports("avx2")) return integrate_row_avx2;
-  return integrate_row_x86_64;
+
+RowIntegration row_integrator(int width) {
+  switch (width) {
+    case 8:
+      return integrate_row_avx512;
+    case 4:
+      return integrate_row_avx2;
+    default:
+      return integrate_row_x86_64;
+  }
 }
 
 PreintegratedGrid kernel_grid(const PreintegratedTables& t) {
@@ -492,9 +497,21 @@ PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, con
   return t;
 }
 
+std::vector<int> preintegrated_build_widths() {
+  std::vector<int> widths;
+  if (__builtin_cpu_supports("avx512f")) widths.push_back(8);
+  if (__builtin_cpu_supports("avx2")) widths.push_back(4);
+  widths.push_back(2);
+  return widths;
+}
+
 void build_preintegrated_words(const SpectralTables& tables, const WavelengthSamples& samples, PreintegratedTables& t,
-                               std::span<std::uint32_t> packed) {
+                               std::span<std::uint32_t> packed, int width) {
   if (packed.size() != t.word_count()) throw Error("internal: preintegrated words of the wrong size");
+  const std::vector<int> widths = preintegrated_build_widths();
+  if (width == 0) width = widths.front();
+  if (std::find(widths.begin(), widths.end(), width) == widths.end())
+    throw Error("internal: this host cannot build preintegrated tables " + std::to_string(width) + " nodes wide");
   if (tables.r > kMaxRadius) throw Error("preintegrated tables: the coherence window is too narrow (radius > 16 bins)");
   std::vector<WavelengthPowers> powers;
   std::vector<glm::dvec3> weights;
@@ -510,7 +527,7 @@ void build_preintegrated_words(const SpectralTables& tables, const WavelengthSam
   std::vector<double> row_largest(static_cast<size_t>(t.nv) * t.terms, 0.0);  // max |T'_p| channel of each row
   const AxisWindows columns = axis_windows(tables, powers, 0, t.origin.x, t.spacing.x, t.nu);
   const RowJob job{tables, live, powers, weights, columns, recentre, t, T, row_largest};
-  const auto integrate_row = row_integrator();
+  const RowIntegration integrate_row = row_integrator(width);
   tbb::parallel_for(0, t.nv, [&](int iv) { integrate_row(iv, job); });
 
   t.scale.assign(t.terms, 0.0f);

@@ -71,10 +71,16 @@ PreintegratedLayout preintegrated_layout(const SpectralTables& tables, const Wav
 PreintegratedTables preintegrated_header(const SpectralTables& tables, const WavelengthSamples& samples,
                                          const PreintegratedDomain& domain, const PreintegrationSettings& settings);
 
+// The vector widths (nodes integrated side by side) the build can run on this host, widest first: 8 with
+// AVX-512, 4 with AVX2, and 2 on any x86-64. Every width builds the same words
+// (docs/diffraction_fast_paths.md, "Eight nodes a vector").
+std::vector<int> preintegrated_build_widths();
+
 // The build into memory the caller owns (a mapped device buffer: no copy of the tables on the way to
-// the device): fills header.scale and writes header.word_count() words to `words`.
+// the device): fills header.scale and writes header.word_count() words to `words`. `width`: one of
+// preintegrated_build_widths(), 0 for the widest.
 void build_preintegrated_words(const SpectralTables& tables, const WavelengthSamples& samples,
-                               PreintegratedTables& header, std::span<std::uint32_t> words);
+                               PreintegratedTables& header, std::span<std::uint32_t> words, int width = 0);
 
 // preintegrated_header, then build_preintegrated_words into the tables' own `packed`.
 PreintegratedTables build_preintegrated_tables(const SpectralTables& tables, const WavelengthSamples& samples,

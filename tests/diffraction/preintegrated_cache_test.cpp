@@ -1,6 +1,6 @@
 // Building the pre-integrated tables in parallel and keeping them across runs
 // (docs/diffraction_fast_paths.md, "Precompute" and "Table cache"): the parallel build is the serial
-// one bit for bit; a second build of the same inputs is read from the cache and equals a fresh
+// one bit for bit, and so is the build at every vector width the host has; a second build of the same inputs is read from the cache and equals a fresh
 // build; a changed input misses; a corrupt or truncated file is rebuilt; an unwritable cache costs
 // a warning, not the tables; the folder is kept within its bound, least recently used tables first.
 #include <gtest/gtest.h>
@@ -100,6 +100,27 @@ TEST(PreintegratedCache, ParallelBuildEqualsTheSerialBuild) {
   expect_same_tables(parallel, serial);
 }
 
+// The build runs W nodes side by side in vectors of W doubles, W by the host's instruction set; each lane
+// runs one node's operations in one order, so every width the host has builds the same words to the bit.
+TEST(PreintegratedCache, EveryVectorWidthBuildsTheSameWords) {
+  const Inputs in = inputs(kCrossed);
+  const std::vector<int> widths = preintegrated_build_widths();
+  ASSERT_EQ(widths.back(), 2);
+  const PreintegratedTables widest = build_preintegrated_tables(in.tables, in.samples, in.domain);
+  ASSERT_NE(widest.nu % 8, 0);  // each row ends in a group short of the widths 8 and 4
+  ASSERT_NE(widest.nu % 4, 0);
+  for (int width : widths) {
+    SCOPED_TRACE(width);
+    PreintegratedTables t = preintegrated_header(in.tables, in.samples, in.domain, {});
+    t.packed.resize(t.word_count());
+    build_preintegrated_words(in.tables, in.samples, t, t.packed, width);
+    expect_same_tables(t, widest);
+  }
+  PreintegratedTables t = preintegrated_header(in.tables, in.samples, in.domain, {});
+  t.packed.resize(t.word_count());
+  EXPECT_THROW(build_preintegrated_words(in.tables, in.samples, t, t.packed, 3), Error);
+}
+
 TEST(PreintegratedCache, SecondBuildIsReadFromTheCache) {
   const Inputs in = inputs(kCrossed);
   CacheFolder folder("reuse");
@@ -174,7 +195,7 @@ TEST(PreintegratedCache, MappedWordsAreTheTablesAtAnAlignedOffset) {
   CacheFolder folder("mapped");
   PreintegratedTables header = preintegrated_header(in.tables, in.samples, in.domain, {});
   EXPECT_FALSE(map_cached_preintegrated_words(folder.path, in.tables, in.samples, in.domain, {}, header));  // none yet
-  EXPECT_FALSE(map_cached_preintegrated_words({}, in.tables, in.samples, in.domain, {}, header));  // no cache
+  EXPECT_FALSE(map_cached_preintegrated_words({}, in.tables, in.samples, in.domain, {}, header));           // no cache
   ASSERT_EQ(cached_preintegrated_tables(folder.path, in.tables, in.samples, in.domain).use, TableCacheUse::Miss);
   {
     const std::optional<MappedTableWords> mapped =
