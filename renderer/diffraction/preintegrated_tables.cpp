@@ -145,6 +145,12 @@ using LaneWords = std::vector<double, boost::alignment::aligned_allocator<double
 
 #define FACET_INLINE [[gnu::always_inline]] inline
 
+// A column of G, or a lane's C, holds N terms rounded up to whole vectors of W.
+template <int W>
+constexpr int lane_stride(int N) {
+  return (N + W - 1) / W * W;
+}
+
 // What one wavelength adds to a group's nodes: per lane, the window weights e_x (null for a lane the
 // wavelength skips or past the row's end), and where G of the window's first column and the liveness of
 // its columns are (RowIntegrator). The columns are [d stride + n], d < width (integrate_group).
@@ -209,7 +215,7 @@ FACET_INLINE void integrate_group(const GroupWindows<W>& w, int N, int width, co
   Lanes<W>* q = im2 + N;
   // C of lane L at [L stride + n] (doubles), stride = N rounded up to whole vectors, as G's columns: the
   // window sums run whole vectors, with none of the remainder loops a vectorised loop over N < 16 has.
-  const int stride = (N + W - 1) / W * W, vectors = stride / W;
+  const int stride = lane_stride<W>(N), vectors = stride / W;
   Lanes<W>* c_re = q + 2 * N;
   Lanes<W>* c_im = c_re + stride;
   bool any = false;
@@ -274,7 +280,7 @@ template <int W>
 class RowIntegrator {
  public:
   explicit RowIntegrator(const SpectralTables& t, const std::vector<char>& live)
-      : t_(t), live_(live), stride_((t.N + W - 1) / W * W), scratch_((6 * t.N + 4 * stride_) * W) {}
+      : t_(t), live_(live), stride_(lane_stride<W>(t.N)), scratch_((6 * t.N + 4 * stride_) * W) {}
 
   // G over the bin columns jx_first..jx_last for the row window y at (iv, wavelength). Only live bins
   // are summed; a column without any is marked dead, so a node whose window holds no live bin is skipped.

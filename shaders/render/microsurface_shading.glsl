@@ -182,7 +182,9 @@ float microsurface_footprint_texels(MicrosurfaceFootprint fp) {
 // How much of `filtered`'s answer comes from the traced field: 1 where the footprint's longer axis is
 // within one texel (one ray resolves the bilinear surface), 0 from two texels on (the statistics),
 // linear in between (docs/microsurface_filtering.md, "Across scales").
-float microsurface_trace_weight(MicrosurfaceFootprint fp) { return clamp(2.0 - microsurface_footprint_texels(fp), 0.0, 1.0); }
+float microsurface_trace_weight(MicrosurfaceFootprint fp) {
+  return clamp(2.0 - microsurface_footprint_texels(fp), 0.0, 1.0);
+}
 
 // The level filtered traces the field at for the ray o + t d (T2): the MIP level of the footprint's
 // taps where the ray meets the flat rectangle, so features wider than about half the footprint are

@@ -1,8 +1,9 @@
 // Building the pre-integrated tables in parallel and keeping them across runs
 // (docs/diffraction_fast_paths.md, "Precompute" and "Table cache"): the parallel build is the serial
-// one bit for bit, and so is the build at every vector width the host has; a second build of the same inputs is read from the cache and equals a fresh
-// build; a changed input misses; a corrupt or truncated file is rebuilt; an unwritable cache costs
-// a warning, not the tables; the folder is kept within its bound, least recently used tables first.
+// one bit for bit, and so is the build at every vector width the host has; a second build of the same
+// inputs is read from the cache and equals a fresh build; a changed input misses; a corrupt or truncated
+// file is rebuilt; an unwritable cache costs a warning, not the tables; the folder is kept within its
+// bound, least recently used tables first.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
