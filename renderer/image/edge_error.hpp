@@ -1,5 +1,5 @@
 // The edge term of `filtered`'s per-pixel error estimate (docs/error_estimate.md, eq. 3): a pixel whose
-// neighbour lies across a geometric edge (coverage or normal jumps) sees one side of the edge
+// neighbour lies across an edge (coverage, normal, uv or depth jumps) sees one side of the edge
 // where the truth mixes both, so it is off by a fraction of the colour step (a quarter, measured), less
 // with K x K strata. A covered pixel that no texture term models takes the same fraction of the contrast
 // with its covered neighbours (eq. 3'), so that no pixel whose detail varies reads 0.
