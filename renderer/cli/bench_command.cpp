@@ -94,6 +94,11 @@ void add_bench_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(1, 16384));
   command->add_option("--height", bench.height, "Image height (default: the width at the scene's aspect)")
       ->check(CLI::Range(1, 16384));
+  command
+      ->add_option("--path-frames", bench.path_frames,
+                   "Frames sampled along a scene's camera path, each method against each frame's reference "
+                   "(default: 4 quick, 12 full; 0: none)")
+      ->check(CLI::Range(0, 1000));
   command->add_flag("--no-stability", options->no_stability, "Skip the kernel-stability section");
   command->add_flag("--no-roofline", options->no_roofline,
                     "Skip the host probe and the work counts per pixel (the roofline columns)");

@@ -47,6 +47,12 @@ nlohmann::json to_json(const BenchRecord& r) {
   json["roofline_ms"] = number_or_null(r.roofline_ms());
   json["device_vs_roofline"] = number_or_null(r.device_vs_roofline());
   if (r.error_estimate) json.update(to_json(*r.error_estimate));
+  if (r.path)
+    json["path"] = {{"frames", r.path->frames},
+                    {"rmse", r.path->rmse},
+                    {"flip", r.path->flip},
+                    {"rmse_jump_ratio", error_smoothness(r.path->rmse).jump_ratio()},
+                    {"flip_jump_ratio", error_smoothness(r.path->flip).jump_ratio()}};
   return json;
 }
 

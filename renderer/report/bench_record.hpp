@@ -10,6 +10,7 @@
 #include "common/phase_timings.hpp"
 #include "image/error_estimate_quality.hpp"
 #include "image/image_comparison.hpp"
+#include "report/camera_path_errors.hpp"
 #include "report/timing.hpp"
 
 namespace facet::report {
@@ -21,17 +22,18 @@ struct BenchRecord {
   int width = 0, height = 0;
   std::string device, machine, facet_version;
   std::vector<std::string> overrides;  // --set of the scene, as given
-  std::optional<std::string> error;  // set: the method failed; no timing, metrics or images
+  std::optional<std::string> error;    // set: the method failed; no timing, metrics or images
   Timing timing;
   double prepare_ms = 0.0;  // wall time of preparing the method and rendering its first (warm-up) frame
   PhaseTimings phases;      // of that: the preparation's phases and first_frame
   ImageComparison comparison;
-  std::string image, heatmap;  // PNG paths relative to the output folder
+  std::string image, heatmap;                          // PNG paths relative to the output folder
   std::optional<ErrorEstimateQuality> error_estimate;  // methods that estimate their per-pixel error (filtered...)
   // The roofline (docs/report.md): the host's measured peak (gpu/peak_probe.hpp) and the method's work
   // per pixel, counted by its instrumented render pass (gpu/work_per_pixel.hpp); unset: not measured.
   std::optional<double> probe_fma_per_second;
   std::optional<double> work_fma_per_pixel, reads_per_pixel;
+  std::optional<CameraPathSeries> path;  // along the scene's camera path (report/camera_path_errors.hpp)
 
   bool ok() const { return !error.has_value(); }
   double time_ms() const { return timing.headline().median; }
@@ -45,11 +47,12 @@ struct BenchRecord {
 // facet_version and either
 // error, or time_ms (median; device time when there is one, else wall), time_ms_min, time_ms_max,
 // time_source ("gpu" | "wall"), wall_ms (median), wall_ms_min, wall_ms_max, gpu_ms (median or null),
-// repeats, prepare_ms, phases ({name: wall ms}), the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim, flip), image, heatmap,
-// probe_fma_per_second, work_fma_per_pixel, reads_per_pixel, roofline_ms and device_vs_roofline (each null when
-// not measured: `facet bench --no-roofline`, or no device time); for a method that estimates its error, also
-// error_spearman, error_mean_ratio, error_calibration (as facet compare).
-// results.json adds `schema` to each (report_files.hpp).
+// repeats, prepare_ms, phases ({name: wall ms}), the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim,
+// flip), image, heatmap, probe_fma_per_second, work_fma_per_pixel, reads_per_pixel, roofline_ms and device_vs_roofline
+// (each null when not measured: `facet bench --no-roofline`, or no device time); for a method that estimates its error,
+// also error_spearman, error_mean_ratio, error_calibration (as facet compare); on a scene with a camera path, path:
+// {frames, rmse, flip (one per sampled frame), rmse_jump_ratio, flip_jump_ratio}. results.json adds `schema` to each
+// (report_files.hpp).
 nlohmann::json to_json(const BenchRecord& record);
 
 // A number, or null when unset: the optional figures of results.json and run.json.

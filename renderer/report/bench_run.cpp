@@ -19,11 +19,13 @@
 #include "image/png_io.hpp"
 #include "image/thumbnail.hpp"
 #include "report/calibration_plot.hpp"
+#include "report/camera_path_errors.hpp"
 #include "report/method_catalogue.hpp"
 #include "report/output_folder.hpp"
 #include "report/reference_cache.hpp"
 #include "report/run_info.hpp"
 #include "report/svg_plot.hpp"
+#include "scene/camera_path.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace facet::report {
@@ -34,6 +36,8 @@ constexpr int kQuickWidth = 160;
 // Work is counted on a frame at most this wide (the bench's aspect): the count is per pixel.
 constexpr int kWorkCountWidth = 160;
 constexpr int kThumbnailWidth = 320;
+// Frames sampled along a camera path by default: enough for the error's curve, each with its reference.
+constexpr int kQuickPathFrames = 4, kPathFrames = 12;
 
 // "ss:4" -> "ss-4": safe in file names and URLs.
 std::string file_stem(const std::string& method) {
@@ -75,8 +79,8 @@ std::optional<ErrorEstimateQuality> judge_estimate(vk::Context& context, const S
 // Times one method on one scene; any failure becomes the record's error.
 BenchRecord measure_method(vk::Context& context, const Scene& scene, const CatalogueEntry& method,
                            const Image& reference, int repeats, const std::filesystem::path& out_dir,
-                           const std::string& scene_name, const std::optional<gpu::PeakProbe>& probe, BenchRecord record,
-                           const std::function<void()>& tick) {
+                           const std::string& scene_name, const std::optional<gpu::PeakProbe>& probe,
+                           BenchRecord record, const std::function<void()>& tick) {
   record.method = method.name;
   try {
     // Each method's set-up includes compiling its pipelines, as `facet render` pays it alone.
@@ -120,6 +124,23 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
   return record;
 }
 
+// The methods that ran along the scene's camera path: each record gets its series, the scene the plot.
+void run_camera_path(vk::Context& context, const Scene& scene, std::span<const CatalogueEntry> methods,
+                     CameraPathRequest request, SceneRun& run, BenchRun& bench, const std::filesystem::path& out_dir) {
+  const auto frames = static_cast<std::int64_t>(path_sample_frames(frame_count(scene), request.samples).size());
+  ProgressBar progress("camera path " + run.name, frames * static_cast<std::int64_t>(1 + methods.size()));
+  std::int64_t done = 0;
+  request.tick = [&] { progress.update(++done); };
+  const std::vector<CameraPathSeries> series = measure_camera_path(context, scene, methods, request);
+  progress.finish();
+  for (const CameraPathSeries& s : series)
+    for (BenchRecord& record : bench.records)
+      if (record.scene == run.name && record.method == s.method) record.path = s;
+  run.path_plot = run.name + "/camera_path.svg";
+  run.path_plot_svg = camera_path_svg(series, run.name + ": error along the camera path");
+  write_file_atomically(out_dir / run.path_plot, run.path_plot_svg);
+}
+
 void run_scene(vk::Context& context, const BenchOptions& options, const std::filesystem::path& cache_dir, SceneRun& run,
                BenchRun& bench) {
   BenchRecord base;
@@ -131,6 +152,7 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   base.overrides = bench.overrides;
   Scene scene;
   CachedReference reference;
+  ReferenceKey reference_key;
   try {
     scene = load_scene(run.scene_file, bench.overrides);
     std::tie(run.width, run.height) = resolution(options, scene.camera);
@@ -142,9 +164,16 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
       if (!bar) bar = std::make_unique<ProgressBar>("reference " + run.name, total);
       bar->update(done);
     };
-    reference = cached_reference(
-        cache_dir, {run.scene_file, bench.facet_version, run.width, run.height, bench.grid, bench.seed, bench.overrides},
-        [&] { return reference_frames.render(scene.camera, run.width, run.height, request).image; });
+    reference_key = {.scene_file = run.scene_file,
+                     .renderer_version = bench.facet_version,
+                     .width = run.width,
+                     .height = run.height,
+                     .grid = bench.grid,
+                     .seed = bench.seed,
+                     .overrides = bench.overrides};
+    reference = cached_reference(cache_dir, reference_key, [&] {
+      return reference_frames.render(scene.camera, run.width, run.height, request).image;
+    });
     if (bar) bar->finish();
     std::filesystem::create_directories(options.out_dir / run.name);
     run.reference_image = run.name + "/reference.png";
@@ -169,6 +198,7 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
   std::int64_t step = 0;
   std::vector<PlotPoint> points, wall_points;
   std::vector<CalibrationCurve> calibration;
+  std::vector<CatalogueEntry> ran;
   for (std::size_t i = 0; i < methods.size(); ++i) {
     BenchRecord record = measure_method(context, scene, methods[i], reference.image, bench.repeats, options.out_dir,
                                         run.name, bench.probe, base, [&] { progress.update(++step); });
@@ -178,6 +208,7 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
       points.push_back({record.method, record.time_ms(), record.comparison.rmse});
       wall_points.push_back({record.method, record.timing.wall_ms.median, record.comparison.rmse});
       if (record.error_estimate) calibration.push_back({record.method, record.error_estimate->calibration});
+      ran.push_back(methods[i]);
     }
     bench.records.push_back(std::move(record));
   }
@@ -195,6 +226,11 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
     run.calibration_plot_svg = calibration_svg(calibration, run.name + ": error estimate calibration");
     write_file_atomically(options.out_dir / run.calibration_plot, run.calibration_plot_svg);
   }
+  const int path_frames = options.path_frames >= 0 ? options.path_frames
+                          : options.quick          ? kQuickPathFrames
+                                                   : kPathFrames;
+  if (scene.camera_path && path_frames > 0)
+    run_camera_path(context, scene, ran, {reference_key, cache_dir, path_frames, {}}, run, bench, options.out_dir);
 }
 
 }  // namespace

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "report/bench_record.hpp"
 #include "gpu/peak_probe.hpp"
+#include "report/bench_record.hpp"
 #include "report/kernel_stability.hpp"
 #include "vk/context.hpp"
 
@@ -27,10 +27,11 @@ struct BenchOptions {
   int grid = 0;                     // reference N x N; 0: 8 quick, 32 full
   int repeats = 0;                  // timed runs per method; 0: 2 quick, 5 full
   std::uint64_t seed = 1;
-  std::vector<std::string> methods;  // empty: the catalogue's applicable ones
+  std::vector<std::string> methods;    // empty: the catalogue's applicable ones
   std::vector<std::string> overrides;  // --set PATH=VALUE, applied to every scene
   bool kernel_stability = true;
   bool roofline = true;  // probe the host's peak and count each method's work per pixel
+  int path_frames = -1;  // frames sampled along a scene's camera path; -1: the mode's (4 quick, 12 full); 0: none
   std::string facet_version;
   vk::ContextOptions device;
 };
@@ -46,6 +47,8 @@ struct SceneRun {
   std::string plot_svg, wall_plot_svg;           // their text, for index.html to inline
   // The error estimates' calibration plot ("" when no method of the scene estimates its error).
   std::string calibration_plot, calibration_plot_svg;
+  // The methods' per-frame error along the scene's camera path ("" without a path or with --path-frames 0).
+  std::string path_plot, path_plot_svg;
 };
 
 struct BenchRun {
@@ -53,7 +56,7 @@ struct BenchRun {
   bool quick = false;
   int grid = 0, repeats = 0;
   std::uint64_t seed = 1;
-  std::vector<std::string> overrides;  // --set, as given
+  std::vector<std::string> overrides;   // --set, as given
   std::optional<gpu::PeakProbe> probe;  // the host's peak, measured once per run (unset: --no-roofline)
   std::vector<SceneRun> scenes;
   std::vector<BenchRecord> records;

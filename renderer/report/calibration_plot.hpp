@@ -15,8 +15,8 @@ struct CalibrationCurve {
   std::vector<CalibrationBin> bins;
 };
 
-// Standalone SVG (<svg class="calibration">): one <polyline class="curve"> and its <circle class="bin">s per curve, a
-// <line class="diagonal">, and a legend naming each curve in its colour.
+// Standalone SVG (<svg class="calibration">, report/line_plot.hpp): one <polyline class="curve"> and its
+// <circle class="point">s per curve, a <line class="diagonal">, and a legend naming each curve in its colour.
 std::string calibration_svg(const std::vector<CalibrationCurve>& curves, const std::string& title);
 
 }  // namespace facet::report

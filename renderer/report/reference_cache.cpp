@@ -41,6 +41,7 @@ std::string reference_cache_key(const ReferenceKey& key) {
   if (!key.overrides.empty()) hash.add("\nset " + overrides_text(key.overrides));  // none: the keys made before --set
   hash.add("\nversion " + key.renderer_version + "\nsize " + std::to_string(key.width) + "x" +
            std::to_string(key.height) + "\ngrid " + std::to_string(key.grid) + "\nseed " + std::to_string(key.seed));
+  if (key.frame >= 0) hash.add("\nframe " + std::to_string(key.frame));  // none: the keys of still cameras
   return hash.hex();
 }
 

@@ -20,10 +20,12 @@ struct ReferenceKey {
   int grid = 0;
   std::uint64_t seed = 0;
   std::vector<std::string> overrides;  // --set of the scene
+  int frame = -1;                      // a frame of the scene's camera path; -1: its still camera
 };
 
 // Hex digest of the scene file, its overrides, every file it references (named relative to the scene's
-// folder, so a moved checkout still hits), the renderer version, the resolution, the grid and the seed.
+// folder, so a moved checkout still hits), the renderer version, the resolution, the grid, the seed and
+// the camera path's frame.
 std::string reference_cache_key(const ReferenceKey& key);
 
 struct CachedReference {

@@ -88,7 +88,8 @@ nlohmann::json run_json(const BenchRun& run) {
                     {"reference_image", s.reference_image},
                     {"plot", s.plot},
                     {"wall_plot", s.wall_plot},
-                    {"calibration_plot", s.calibration_plot}});
+                    {"calibration_plot", s.calibration_plot},
+                    {"camera_path_plot", s.path_plot}});
     }
     scenes.push_back(scene);
   }

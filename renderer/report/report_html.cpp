@@ -81,7 +81,7 @@ void write_html_scene(std::ostringstream& html, const BenchRun& run, const Scene
   html << ", " << scene.width << "×" << scene.height << ", reference "
        << (scene.reference_cache_hit ? "from the cache" : "rendered in " + format_3g(scene.reference_ms) + " ms")
        << "</p>\n<div class=\"plots\">\n"
-       << scene.plot_svg << scene.wall_plot_svg << scene.calibration_plot_svg << "</div>\n";
+       << scene.plot_svg << scene.wall_plot_svg << scene.calibration_plot_svg << scene.path_plot_svg << "</div>\n";
   write_html_metrics(html, run, scene);
   html << flip_colour_bar("magma-" + scene.name)
        << "<div class=\"methods\">\n<div class=\"method\"><b>reference</b><img src=\""
@@ -144,9 +144,9 @@ std::string report_html(const BenchRun& run) {
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>facet bench report</title><style>"
        << kStyle << "</style></head><body>\n<h1>facet bench report</h1>\n<p>" << xml_escape(run.machine) << "; "
-       << xml_escape(run.device) << "; " << xml_escape(probe_summary(run)) << "; facet " << xml_escape(run.facet_version) << "; " << run.date << "; "
-       << (run.quick ? "--quick" : "full") << " run, reference grid " << run.grid << "×" << run.grid << ", "
-       << counted(run.repeats, "timed run")
+       << xml_escape(run.device) << "; " << xml_escape(probe_summary(run)) << "; facet "
+       << xml_escape(run.facet_version) << "; " << run.date << "; " << (run.quick ? "--quick" : "full")
+       << " run, reference grid " << run.grid << "×" << run.grid << ", " << counted(run.repeats, "timed run")
        << " after a warm-up. Time: median device time per frame (wall time if the device "
        << "has no timestamps); wall: median wall time around each frame; prepare: set-up plus the warm-up frame. "
        << "Heat maps: per-pixel FLIP against the reference (0 black, 1 yellow). Roofline: a method's counted work "

@@ -18,9 +18,9 @@ std::string table_cell(const std::string& text) {
 
 void write_header(std::ostringstream& md, const BenchRun& run) {
   md << "# facet bench report\n\n"
-     << "- machine: " << run.machine << "\n- device: " << run.device << "\n- " << probe_summary(run)
-     << "\n- facet " << run.facet_version << ", "
-     << run.date << ", " << (run.quick ? "`--quick`" : "full") << " run: reference " << run.grid << "×" << run.grid
+     << "- machine: " << run.machine << "\n- device: " << run.device << "\n- " << probe_summary(run) << "\n- facet "
+     << run.facet_version << ", " << run.date << ", " << (run.quick ? "`--quick`" : "full") << " run: reference "
+     << run.grid << "×" << run.grid
      << " jittered rays per pixel, each method rendered once to warm up and then timed over "
      << counted(run.repeats, "run") << "\n\n"
      << "`time` is the median device time (GPU timestamps) per frame when the device has timestamps, else the "
@@ -58,6 +58,27 @@ void write_markdown_headline(std::ostringstream& md, const BenchRun& run) {
   md << "\n";
 }
 
+// The error along the camera path: the plot, then per method the change of its error from one sampled
+// frame to the next (docs/report.md, "Along the camera path").
+void write_markdown_camera_path(std::ostringstream& md, const BenchRun& run, const SceneRun& scene) {
+  if (scene.path_plot.empty()) return;
+  md << "### " << scene.name << " along the camera path\n\n![" << scene.name << ": error along the camera path]("
+     << scene.path_plot << ")\n\n"
+     << "| method | frames | mean RMSE | mean change | largest change | jump ratio (RMSE) | jump ratio (FLIP) |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  for (const SceneRow& row : scene_rows(run, scene.name)) {
+    const std::optional<CameraPathSeries>& path = row.record->path;
+    if (!path) continue;
+    const ErrorSmoothness rmse = error_smoothness(path->rmse), flip = error_smoothness(path->flip);
+    double mean = 0.0;
+    for (double e : path->rmse) mean += e / static_cast<double>(path->rmse.size());
+    md << "| " << path->method << " | " << path->frames.size() << " | " << format_3g(mean) << " | "
+       << format_3g(rmse.mean_change) << " | " << format_3g(rmse.largest_change) << " | "
+       << format_3g(rmse.jump_ratio()) << " | " << format_3g(flip.jump_ratio()) << " |\n";
+  }
+  md << "\n";
+}
+
 void write_markdown_scene(std::ostringstream& md, const BenchRun& run, const SceneRun& scene) {
   md << "## " << scene.name << "\n\n`" << scene.scene_file << "`";
   if (scene.error) {
@@ -87,6 +108,7 @@ void write_markdown_scene(std::ostringstream& md, const BenchRun& run, const Sce
     md << " " << (row.on_front ? "●" : "") << " |\n";
   }
   md << "\n";
+  write_markdown_camera_path(md, run, scene);
 }
 
 void write_markdown_stability(std::ostringstream& md, const BenchRun& run) {

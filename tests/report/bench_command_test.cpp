@@ -111,7 +111,8 @@ void expect_html_report(const std::string& html, const json& results) {
   }
   EXPECT_EQ(plots, 2);  // time_ms and wall_ms against RMSE
   // The error estimates' calibration plot, inline too, when a method estimates its error.
-  const bool estimates = std::any_of(results.begin(), results.end(), [](const json& r) { return r.contains("error_spearman"); });
+  const bool estimates =
+      std::any_of(results.begin(), results.end(), [](const json& r) { return r.contains("error_spearman"); });
   EXPECT_EQ(html.find("<svg class=\"calibration\"") != std::string::npos, estimates);
   auto number = [](const json& value) { return value.is_null() ? std::string("–") : format_3g(value.get<double>()); };
   for (const json& r : results) {
@@ -266,6 +267,59 @@ TEST_F(Bench, ReferenceCacheHitsUntilTheSceneChanges) {
   EXPECT_FALSE(reference_cache_hit());
   ASSERT_EQ(bench("--no-stability --methods naive").exit_code, 0);
   EXPECT_TRUE(reference_cache_hit());
+}
+
+// Along a camera path (docs/report.md, "Along the camera path"): each method's error at the sampled
+// frames, each against that frame's own reference, in results.json, the plot and report.md. One value is
+// checked against `facet render --frame` and `facet reference --frame` of the same frame, compared by
+// `facet compare`.
+TEST_F(Bench, CameraPathsGetTheErrorOfEverySampledFrame) {
+  write_scene();
+  const std::string path =
+      " --set 'camera_path={\"frames\": 5, \"keys\": [{\"frame\": 0, \"position\": [0, 1, 0], \"target\": [0, 0, -1]},"
+      " {\"frame\": 4, \"position\": [0.6, 0.7, -0.3], \"target\": [0.4, 0, -1.5]}]}'";
+  const auto r = bench("--no-stability --methods naive,filtered --path-frames 3" + path);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json results = read_json("results.json");
+  ASSERT_EQ(results.size(), 2u);
+  for (const json& record : results) {
+    ASSERT_TRUE(record.contains("path")) << record.dump();
+    EXPECT_EQ(record["path"]["frames"], json::parse("[0, 2, 4]"));
+    for (const char* key : {"rmse", "flip"}) {
+      ASSERT_EQ(record["path"][key].size(), 3u);
+      for (const json& e : record["path"][key]) EXPECT_TRUE(e.get<double>() >= 0.0 && std::isfinite(e.get<double>()));
+    }
+    EXPECT_GE(record["path"]["rmse_jump_ratio"].get<double>(), 1.0);
+  }
+  // The frames differ, so do their errors; frame 2 of naive as the commands make and compare it.
+  const json& naive = results[0]["method"] == "naive" ? results[0] : results[1];
+  EXPECT_NE(naive["path"]["rmse"][0], naive["path"]["rmse"][2]);
+  const fs::path scene = dir_ / "tiny.json", frame = dir_ / "frame.exr", reference = dir_ / "reference.exr";
+  const std::string common = "'" + scene.string() + "' --width 48 --frame 2 --pixel-type float" + path;
+  ASSERT_EQ(test::run_command(kFacet + " render " + common + " --method naive -o '" + frame.string() + "'").exit_code,
+            0);
+  ASSERT_EQ(test::run_command(kFacet + " reference " + common + " --grid 4 --seed 1 -o '" + reference.string() + "'")
+                .exit_code,
+            0);
+  const auto compared =
+      test::run_command(kFacet + " compare '" + frame.string() + "' '" + reference.string() + "' --json");
+  ASSERT_EQ(compared.exit_code, 0) << compared.err;
+  EXPECT_NEAR(json::parse(compared.out)["rmse"].get<double>(), naive["path"]["rmse"][1].get<double>(), 1e-6);
+  // The plot draws both methods; report.md has the section; rerunning takes the frames' references from the cache.
+  const json run = read_json("run.json");
+  const std::string svg = test::read_text(dir_ / "out" / run["scenes"][0]["camera_path_plot"].get<std::string>());
+  EXPECT_NE(svg.find("<polyline class=\"curve\""), svg.rfind("<polyline class=\"curve\""));
+  const std::string md = test::read_text(dir_ / "out/report.md");
+  EXPECT_NE(md.find("### tiny along the camera path"), std::string::npos);
+  EXPECT_NE(md.find("| naive | 3 |"), std::string::npos);
+  std::size_t cached = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_ / "out/cache")) ++cached;
+  EXPECT_EQ(cached, 4u);  // the still camera's and three frames'
+  ASSERT_EQ(bench("--no-stability --methods naive --path-frames 3" + path).exit_code, 0);
+  EXPECT_EQ(read_json("results.json")[0]["path"]["rmse"], naive["path"]["rmse"]);
+  // --path-frames 0 leaves the section out.
+  ASSERT_EQ(bench("--no-stability --methods naive --path-frames 0" + path).exit_code, 0);
+  EXPECT_FALSE(read_json("results.json")[0].contains("path"));
 }
 
 // --set overrides every scene before its reference: an overridden scene has a reference of its own

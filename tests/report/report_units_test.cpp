@@ -1,5 +1,6 @@
 // The pieces of `facet bench` that need no device: Pareto front, log-log SVG, timing statistics,
-// the headline choice, the method catalogue and the scene dependency hash.
+// the headline choice, the method catalogue, the scene dependency hash and the camera path's frames,
+// error changes and plot.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "common/content_hash.hpp"
+#include "report/camera_path_errors.hpp"
 #include "report/headline.hpp"
 #include "report/method_catalogue.hpp"
 #include "report/pareto.hpp"
@@ -332,6 +334,60 @@ TEST(ContentHash, MatchesTheMd5TestSuite) {
   abc.add("a");
   abc.add("bc");
   EXPECT_EQ(abc.hex(), "900150983cd24fb0d6963f7d28e17f72");
+}
+
+TEST(CameraPath, SamplesFramesEvenlyWithBothEnds) {
+  for (int count : {1, 2, 5, 24, 60})
+    for (int samples : {1, 2, 3, 4, 12, 100}) {
+      const std::vector<int> frames = path_sample_frames(count, samples);
+      ASSERT_EQ(frames.size(), static_cast<std::size_t>(std::min(count, samples))) << count << " " << samples;
+      EXPECT_EQ(frames.front(), 0);
+      if (samples > 1) {
+        EXPECT_EQ(frames.back(), count - 1);
+      }
+      for (std::size_t i = 1; i < frames.size(); ++i) {
+        EXPECT_GT(frames[i], frames[i - 1]);
+        // Even: every gap within one frame of (count - 1) / (samples - 1).
+        EXPECT_LE(std::abs((frames[i] - frames[i - 1]) - double(count - 1) / double(frames.size() - 1)), 1.0);
+      }
+    }
+  EXPECT_EQ(path_sample_frames(24, 4), (std::vector<int>{0, 8, 15, 23}));
+  EXPECT_TRUE(path_sample_frames(24, 0).empty());
+}
+
+TEST(CameraPath, JumpRatioIsTheLargestChangeOverTheMean) {
+  const std::vector<double> errors = {1.0, 2.0, 4.0, 4.0};  // changes 1, 2, 0
+  const ErrorSmoothness s = error_smoothness(errors);
+  EXPECT_DOUBLE_EQ(s.mean_change, 1.0);
+  EXPECT_DOUBLE_EQ(s.largest_change, 2.0);
+  EXPECT_DOUBLE_EQ(s.jump_ratio(), 2.0);
+  // Equal changes (a steady drift either way) give 1; a constant or a single value, 0.
+  EXPECT_DOUBLE_EQ(error_smoothness(std::vector<double>{3.0, 2.0, 1.0, 0.0}).jump_ratio(), 1.0);
+  EXPECT_EQ(error_smoothness(std::vector<double>{0.5, 0.5, 0.5}).jump_ratio(), 0.0);
+  EXPECT_EQ(error_smoothness(std::vector<double>{0.5}).jump_ratio(), 0.0);
+}
+
+TEST(CameraPath, PlotsOneCurvePerMethodWithAPointPerFrame) {
+  const std::vector<CameraPathSeries> series = {{"naive", {0, 5, 10}, {0.3, 0.2, 0.25}, {0.1, 0.1, 0.1}},
+                                                {"filtered", {0, 5, 10}, {0.05, 0.04, 0.06}, {0.02, 0.02, 0.02}}};
+  const std::string svg = camera_path_svg(series, "a <path>");
+  const auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = svg.find(what); at != std::string::npos; at = svg.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(svg.rfind("<svg class=\"camera-path\"", 0), 0u);
+  EXPECT_EQ(count("<polyline class=\"curve\""), 2u);
+  EXPECT_EQ(count("<circle class=\"point\""), 6u);
+  EXPECT_NE(svg.find("a &lt;path&gt;"), std::string::npos);
+  EXPECT_NE(svg.find("<title>filtered: frame 10, RMSE 0.06</title>"), std::string::npos);
+  // Every coordinate lies inside the SVG's box (the x axis runs from the first sampled frame).
+  const std::regex coordinate("c([xy])=\"([-0-9.]+)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), coordinate); it != std::sregex_iterator(); ++it) {
+    const double v = std::stod((*it)[2]);
+    EXPECT_GE(v, 0.0);
+    EXPECT_LE(v, 484.0);
+  }
 }
 
 }  // namespace
