@@ -21,22 +21,32 @@ inline real2 uv_differential(real3 o, real3 d_offset, real3 p, real3 n, real3 dp
   return real2(c * ru - b * rv, a * rv - b * ru) / det;
 }
 
-// An anisotropic footprint (axes duv_dx, duv_dy) covered by `taps` isotropic lookups spaced along
-// its major axis, each at the MIP level of the footprint's width across it (the minor axis, or the
-// major axis / taps where max_taps cannot cover the whole elongation): the classic anisotropic
-// filtering scheme (e.g. the EWA-approximating hardware filters). Levels are clamped to the chain.
+// An anisotropic footprint covered by `taps` isotropic lookups spaced along its major axis, each at the
+// MIP level of the footprint's width across it (the minor axis, or the major axis / taps where max_taps
+// cannot cover the whole elongation): the classic anisotropic filtering scheme (e.g. the
+// EWA-approximating hardware filters). Levels are clamped to the chain.
+// The pixel's footprint is the parallelogram J [-1/2, 1/2]^2, J = (duv_dx, duv_dy); its axes here are
+// those of the rectangle with the same second moments, J J^T / 12 (J's singular vectors, scaled by its
+// singular values): a sheared parallelogram's derivative vectors are both long where it is thin across,
+// and a level from them would blur it (docs/colormap_filtering.md, "Principal axes").
 struct AnisotropicFootprint {
   real lod;
   real taps;
   real2 major;  // the major axis in uv; tap k of n sits at uv + major ((k + 1/2)/n - 1/2)
-  real2 minor;  // the minor axis in uv
+  real2 minor;  // the minor axis in uv, perpendicular to the major one in texels
 };
 
 inline AnisotropicFootprint anisotropic_footprint(real2 duv_dx, real2 duv_dy, real2 size, real levels, real max_taps) {
-  real length_x = length(duv_dx * size);
-  real length_y = length(duv_dy * size);
-  real major = max(length_x, length_y);
-  real minor = min(length_x, length_y);
+  real2 a = duv_dx * size, b = duv_dy * size;  // in level-0 texels
+  // J J^T = [[p, q], [q, r]]: its larger eigenvalue s1^2 and eigenvector e1, each from the better
+  // conditioned of the two rows; s2 = |det J| / s1 (no cancellation for thin footprints).
+  real p = a.x * a.x + b.x * b.x, q = a.x * a.y + b.x * b.y, r = a.y * a.y + b.y * b.y;
+  real half_difference = real(0.5) * (p - r);
+  real root = sqrt(half_difference * half_difference + q * q);
+  real major = sqrt(real(0.5) * (p + r) + root);
+  real minor = major > real(0) ? abs(a.x * b.y - a.y * b.x) / major : real(0);
+  real2 e1 = half_difference >= real(0) ? real2(half_difference + root, q) : real2(q, root - half_difference);
+  e1 = root > real(0) ? normalize(e1) : real2(real(1), real(0));
   // Within one texel a single bilinear lookup is exact: no taps to spread.
   real taps = major <= real(1) ? real(1) : clamp(ceil(major / max(minor, real(1e-6))), real(1), max_taps);
   real width = max(minor, major / taps);
@@ -47,8 +57,8 @@ inline AnisotropicFootprint anisotropic_footprint(real2 duv_dx, real2 duv_dy, re
   // variance of linearised_tap_variance, on scenes/colormap_objects.json too (sphere, mesh, head-on
   // and grazing planes; docs/colormap_filtering.md), 1 stays best.
   real lod = width > real(2) ? log2(width) - real(1) : real(0);
-  return AnisotropicFootprint(clamp(lod, real(0), levels - real(1)), taps, length_x >= length_y ? duv_dx : duv_dy,
-                              length_x >= length_y ? duv_dy : duv_dx);
+  return AnisotropicFootprint(clamp(lod, real(0), levels - real(1)), taps, major * e1 / size,
+                              minor * real2(-e1.y, e1.x) / size);
 }
 
 // The variance of the bilinear texture over a tap (a parallelogram with axes a, b in level-0

@@ -412,12 +412,18 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   // the whole footprint was clamped to the coarsest level (its own width is unknown there).
   float coarsest = float(m.texture.y) - 1.0;
   float lod = f.lod >= coarsest ? f.lod : max(f.lod - log2(split), 0.0);
-  vec2 tap_major = f.major * size / along, tap_minor = f.minor * size / split;  // one tap's axes, in texels
+  // filtered tiles the pixel's own parallelogram, whose sub-parallelograms' level-0 variance is exact
+  // (linearised_tap_variance): along its longer edge, as many taps as the principal axes ask for; mip and
+  // colormip lay their one row of taps along the principal major axis.
+  bool x_longer = dot(duv_dx * size, duv_dx * size) >= dot(duv_dy * size, duv_dy * size);
+  vec2 major = kTextureMethod >= 3u ? (x_longer ? duv_dx : duv_dy) : f.major;
+  vec2 minor = kTextureMethod >= 3u ? (x_longer ? duv_dy : duv_dx) : f.minor;
+  vec2 tap_major = major * size / along, tap_minor = minor * size / split;  // one tap's axes, in texels
   vec3 colour = vec3(0.0);
   MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
   for (float k = 0.0; k < along; k += 1.0) {
     for (float j = 0.0; j < split; j += 1.0) {
-      vec2 tap = uv + f.major * ((k + 0.5) / along - 0.5) + f.minor * ((j + 0.5) / split - 0.5);
+      vec2 tap = uv + major * ((k + 0.5) / along - 0.5) + minor * ((j + 0.5) / split - 0.5);
       if (kTextureMethod == 2u) {
         colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod).rgb;
       } else if (kTextureMethod == 1u) {

@@ -34,8 +34,9 @@ glm::dvec2 plane_uv(const Scene& scene, const Plane& plane, glm::dvec2 film) {
           glm::dot(p - plane.point, frame.bitangent) * plane.uv_scale.y};
 }
 
-// eq. M1 with the taps of textured_albedo (shaders/render/texture_sampling.glsl): split x split parts, each
-// covered by the whole footprint's tap count, one level finer; or, with split 0, the former pooled Gaussian.
+// eq. M1 with the taps of textured_albedo (shaders/render/texture_sampling.glsl): split x split parts of the
+// pixel's parallelogram, each covered by the whole footprint's tap count, one level finer; or, with split 0,
+// the former pooled Gaussian.
 glm::dvec3 mixture_colour(const precompute::MomentMips& mips, const Colormap& map, glm::dvec2 uv, glm::dvec2 dx,
                           glm::dvec2 dy, int split) {
   const glm::dvec2 size(mips.levels[0].width, mips.levels[0].height);
@@ -46,10 +47,13 @@ glm::dvec3 mixture_colour(const precompute::MomentMips& mips, const Colormap& ma
     return precompute::filtered_colormap_exact(map, pooled.mean, std::sqrt(pooled.variance));
   }
   const double along = f.taps * split, lod = f.lod >= levels - 1 ? f.lod : std::max(f.lod - std::log2(split), 0.0);
+  // The pixel's parallelogram, along its longer edge (the principal axes set the count and the level).
+  const bool x_longer = glm::dot(dx * size, dx * size) >= glm::dot(dy * size, dy * size);
+  const glm::dvec2 major = x_longer ? dx : dy, minor = x_longer ? dy : dx;
   glm::dvec3 sum(0.0);
   for (int k = 0; k < along; ++k)
     for (int j = 0; j < split; ++j) {
-      const glm::dvec2 tap = uv + f.major * ((k + 0.5) / along - 0.5) + f.minor * ((j + 0.5) / split - 0.5);
+      const glm::dvec2 tap = uv + major * ((k + 0.5) / along - 0.5) + minor * ((j + 0.5) / split - 0.5);
       const precompute::MeanVariance t = precompute::lookup_scalar_moments(mips, tap, lod);
       sum += precompute::filtered_colormap_exact(map, t.mean, std::sqrt(t.variance));
     }

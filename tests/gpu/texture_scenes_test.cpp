@@ -74,8 +74,10 @@ TEST(TextureScenes, FilteredBeatsNaiveAndMipOnEveryTexturedScene) {
     EXPECT_LT(error[3], error[1]) << name;
     EXPECT_LT(error[3], error[2]) << name;
     // Per stratum, filtered also resolves geometric edges (silhouettes, where one ray per pixel
-    // aliases), and each stratum's footprint is a quarter of the pixel's.
-    EXPECT_LT(error[5], 0.8 * error[3]) << name;
+    // aliases), and each stratum's footprint is a quarter of the pixel's. Measured 0.35-0.80 of
+    // filtered's error (the planes' highest: no edges, and since the footprints' principal axes,
+    // docs/colormap_filtering.md, one ray filters their sheared footprints well too).
+    EXPECT_LT(error[5], 0.9 * error[3]) << name;
     EXPECT_LT(error[5], error[4]) << name;
     ++tested;
   }

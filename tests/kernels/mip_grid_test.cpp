@@ -1,6 +1,6 @@
-// Texel placement of MIP levels of any size (shaders/lib/mip_grid.glsl) and the linearised
-// variance of a small tap (shaders/lib/texture_footprint.glsl), the two pieces of the footprint
-// lookup that the GPU and the CPU share.
+// Texel placement of MIP levels of any size (shaders/lib/mip_grid.glsl), and the linearised variance of
+// a small tap and the footprint's principal axes (shaders/lib/texture_footprint.glsl): the pieces of the
+// footprint lookup that the GPU and the CPU share.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,8 +73,17 @@ TEST(MipGrid, WholeTexelLevelsTakeTheShortcutsVeryTaps) {
   for (int size0 : {1, 2, 4, 16, 256, 4096, 96, 40, 1000}) {
     for (int span = 1; size0 % span == 0; span *= 2) {
       const int count = size0 / span;
-      std::vector<double> us{0.0, 1.0, -1.0, 0.5 / count, 1.0 - 0.5 / count, 1.0 / count, std::nextafter(1.0, 0.0),
-                             double(NAN), double(INFINITY), -double(INFINITY), 1e300};
+      std::vector<double> us{0.0,
+                             1.0,
+                             -1.0,
+                             0.5 / count,
+                             1.0 - 0.5 / count,
+                             1.0 / count,
+                             std::nextafter(1.0, 0.0),
+                             double(NAN),
+                             double(INFINITY),
+                             -double(INFINITY),
+                             1e300};
       for (int k = 0; k < 300; ++k) us.push_back(unit(rng));
       for (double u : us) {
         expect_whole_taps_equal(u, size0, span, count, k64::mip_axis_taps(u, size0, span, count),
@@ -130,6 +139,74 @@ TEST(LinearisedTapVariance, MatchesBruteForceUpToTheBilinearTerm) {
                    k64::linearised_tap_variance(g, {2.0, 0.0}, {0.0, 2.0}));
   EXPECT_EQ(k64::linearised_tap_variance(g, {0.0, 0.0}, {0.0, 0.0}), 0.0);
   EXPECT_EQ(k32::linearised_tap_variance(glm::vec2(1e30f), {0.0f, 0.0f}, {0.0f, 0.0f}), 0.0f);
+}
+
+// The covariance of the uniform law on the parallelogram J [-1/2, 1/2]^2 by the midpoint rule on an n x n
+// grid of its parameters (exact to O(1/n^2)), in texels.
+glm::dmat2 parallelogram_covariance(glm::dvec2 a, glm::dvec2 b, int n) {
+  glm::dmat2 c(0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const glm::dvec2 x = a * ((i + 0.5) / n - 0.5) + b * ((j + 0.5) / n - 0.5);
+      c += glm::outerProduct(x, x);
+    }
+  return c / double(n * n);
+}
+
+// The footprint's axes are those of the rectangle with the parallelogram's second moments: for random,
+// strongly sheared and axis-aligned parallelograms, (major major^T + minor minor^T) / 12 equals the
+// brute-force covariance, the axes are perpendicular, |major| >= |minor| and |major| |minor| = |det J|.
+TEST(AnisotropicFootprint, AxesHaveTheParallelogramsSecondMoments) {
+  const glm::dvec2 size(64.0, 32.0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coordinate(-20.0, 20.0);
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> cases = {
+      {{8.0, 0.0}, {8.0, 1.0}}, {{0.0, 3.0}, {5.0, 0.0}}, {{4.0, 4.0}, {4.1, 3.9}}, {{-2.0, 7.0}, {2.0, -6.5}}};
+  for (int k = 0; k < 20; ++k)
+    cases.push_back({{coordinate(rng), coordinate(rng)}, {coordinate(rng), coordinate(rng)}});
+  for (const auto& [a, b] : cases) {
+    const k64::AnisotropicFootprint f = k64::anisotropic_footprint(a / size, b / size, size, 20.0, 1e6);
+    const glm::dvec2 major = f.major * size, minor = f.minor * size;
+    const glm::dmat2 rectangle = (glm::outerProduct(major, major) + glm::outerProduct(minor, minor)) / 12.0;
+    const glm::dmat2 brute = parallelogram_covariance(a, b, 400);
+    const double scale = glm::dot(a, a) + glm::dot(b, b);
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c) EXPECT_NEAR(rectangle[c][r], brute[c][r], 1e-5 * scale) << a.x << " " << b.x;
+    EXPECT_NEAR(glm::dot(major, minor), 0.0, 1e-12 * scale);
+    EXPECT_GE(glm::length(major), glm::length(minor));
+    EXPECT_NEAR(glm::length(major) * glm::length(minor), std::abs(a.x * b.y - a.y * b.x), 1e-12 * scale);
+    // float agrees with double.
+    const k32::AnisotropicFootprint g =
+        k32::anisotropic_footprint(glm::vec2(a / size), glm::vec2(b / size), glm::vec2(size), 20.0f, 1e6f);
+    EXPECT_NEAR(g.lod, f.lod, 1e-4);
+    EXPECT_EQ(g.taps, f.taps);
+  }
+}
+
+// A thin sliver whose edges are both 8 texels long but which is 0.7 texels thick across: 8 taps at level
+// 0 (the derivative vectors as axes would give 2 taps at level 2, blurring it across 8 texels); an
+// axis-aligned footprint keeps its own axes; degenerate ones stay finite.
+TEST(AnisotropicFootprint, ShearedFootprintsAreFilteredAtTheirWidth) {
+  const glm::dvec2 size(256.0, 256.0);
+  const k64::AnisotropicFootprint sliver =
+      k64::anisotropic_footprint({8.0 / 256, 0.0}, {8.0 / 256, 1.0 / 256}, size, 9.0, 8.0);
+  EXPECT_EQ(sliver.taps, 8.0);
+  EXPECT_EQ(sliver.lod, 0.0);
+  const k64::AnisotropicFootprint aligned =
+      k64::anisotropic_footprint({0.0, 2.0 / 256}, {16.0 / 256, 0.0}, size, 9.0, 8.0);
+  EXPECT_NEAR(glm::length(aligned.major * size - glm::dvec2(16.0, 0.0)) *
+                  glm::length(aligned.major * size + glm::dvec2(16.0, 0.0)),
+              0.0, 1e-9);
+  EXPECT_NEAR(std::abs(aligned.minor.y * 256), 2.0, 1e-12);
+  EXPECT_EQ(aligned.taps, 8.0);
+  EXPECT_NEAR(aligned.lod, 0.0, 1e-12);  // width max(2, 16 / 8) = 2
+  for (const auto& [a, b] :
+       std::vector<std::pair<glm::dvec2, glm::dvec2>>{{{0, 0}, {0, 0}}, {{0.1, 0.2}, {0.1, 0.2}}}) {
+    const k64::AnisotropicFootprint f = k64::anisotropic_footprint(a, b, size, 9.0, 8.0);
+    EXPECT_TRUE(std::isfinite(f.lod) && std::isfinite(f.taps) && std::isfinite(f.major.x) && std::isfinite(f.major.y) &&
+                std::isfinite(f.minor.x) && std::isfinite(f.minor.y));
+    EXPECT_GE(f.taps, 1.0);
+  }
 }
 
 }  // namespace
