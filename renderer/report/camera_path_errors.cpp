@@ -48,7 +48,7 @@ std::vector<CameraPathSeries> measure_camera_path(vk::Context& context, const Sc
     references.push_back(cached_reference(request.cache_dir, key, [&] {
                            return reference_frames.render(camera_at(scene, frame), width, height).image;
                          }).image);
-    request.tick();
+    if (request.tick) request.tick();
   }
   std::vector<CameraPathSeries> result;
   for (const CatalogueEntry& method : methods) {
@@ -60,7 +60,7 @@ std::vector<CameraPathSeries> measure_camera_path(vk::Context& context, const Sc
             compare_images(prepared.render(camera_at(scene, frames[i]), width, height).image, references[i]);
         series.rmse.push_back(c.rmse);
         series.flip.push_back(c.flip);
-        request.tick();
+        if (request.tick) request.tick();
       }
     } catch (const std::exception&) {
       continue;  // its still frame's record already carries the error

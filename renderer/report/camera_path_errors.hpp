@@ -42,7 +42,7 @@ struct CameraPathRequest {
   ReferenceKey reference;  // the still camera's key; each frame's reference adds its frame number
   std::filesystem::path cache_dir;
   int samples = 0;
-  std::function<void()> tick;  // after each reference and each method's frame
+  std::function<void()> tick;  // after each reference and each method's frame (may be empty)
 };
 
 // The references of the sampled frames (cached like the still camera's), then each method's frames
