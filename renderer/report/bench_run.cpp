@@ -127,8 +127,8 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
 // The methods that ran along the scene's camera path: each record gets its series, the scene the plot.
 void run_camera_path(vk::Context& context, const Scene& scene, std::span<const CatalogueEntry> methods,
                      CameraPathRequest request, SceneRun& run, BenchRun& bench, const std::filesystem::path& out_dir) {
-  const auto frames = static_cast<std::int64_t>(path_sample_frames(frame_count(scene), request.samples).size());
-  ProgressBar progress("camera path " + run.name, frames * static_cast<std::int64_t>(1 + methods.size()));
+  ProgressBar progress("camera path " + run.name,
+                       static_cast<std::int64_t>(request.frames.size() * (1 + methods.size())));
   std::int64_t done = 0;
   request.tick = [&] { progress.update(++done); };
   const std::vector<CameraPathSeries> series = measure_camera_path(context, scene, methods, request);
@@ -230,7 +230,9 @@ void run_scene(vk::Context& context, const BenchOptions& options, const std::fil
                           : options.quick          ? kQuickPathFrames
                                                    : kPathFrames;
   if (scene.camera_path && path_frames > 0)
-    run_camera_path(context, scene, ran, {reference_key, cache_dir, path_frames, {}}, run, bench, options.out_dir);
+    run_camera_path(context, scene, ran,
+                    {reference_key, cache_dir, path_sample_frames(frame_count(scene), path_frames), {}}, run, bench,
+                    options.out_dir);
 }
 
 }  // namespace

@@ -36,7 +36,7 @@ ErrorSmoothness error_smoothness(std::span<const double> errors) {
 std::vector<CameraPathSeries> measure_camera_path(vk::Context& context, const Scene& scene,
                                                   std::span<const CatalogueEntry> methods,
                                                   const CameraPathRequest& request) {
-  const std::vector<int> frames = path_sample_frames(frame_count(scene), request.samples);
+  const std::vector<int>& frames = request.frames;
   const int width = request.reference.width, height = request.reference.height;
   frames::PreparedFrames reference_frames(
       scene, frames::ReferenceMethod{request.reference.grid, static_cast<std::int64_t>(request.reference.seed), 0},

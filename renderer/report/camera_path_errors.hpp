@@ -41,11 +41,11 @@ ErrorSmoothness error_smoothness(std::span<const double> errors);
 struct CameraPathRequest {
   ReferenceKey reference;  // the still camera's key; each frame's reference adds its frame number
   std::filesystem::path cache_dir;
-  int samples = 0;
+  std::vector<int> frames;     // the frames of the path to measure (path_sample_frames)
   std::function<void()> tick;  // after each reference and each method's frame (may be empty)
 };
 
-// The references of the sampled frames (cached like the still camera's), then each method's frames
+// The references of the request's frames (cached like the still camera's), then each method's frames
 // against them. A method that fails on a frame is left out of the result.
 std::vector<CameraPathSeries> measure_camera_path(vk::Context& context, const Scene& scene,
                                                   std::span<const CatalogueEntry> methods,

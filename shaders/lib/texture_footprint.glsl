@@ -34,6 +34,8 @@ struct AnisotropicFootprint {
   real taps;
   real2 major;  // the major axis in uv; tap k of n sits at uv + major ((k + 1/2)/n - 1/2)
   real2 minor;  // the minor axis in uv, perpendicular to the major one in texels
+  real width;   // one tap's width in texels, which chose lod
+  real2 edge_long, edge_short;  // the parallelogram's own edges in uv (duv_dx, duv_dy), the longer first
 };
 
 inline AnisotropicFootprint anisotropic_footprint(real2 duv_dx, real2 duv_dy, real2 size, real levels, real max_taps) {
@@ -57,8 +59,10 @@ inline AnisotropicFootprint anisotropic_footprint(real2 duv_dx, real2 duv_dy, re
   // variance of linearised_tap_variance, on scenes/colormap_objects.json too (sphere, mesh, head-on
   // and grazing planes; docs/colormap_filtering.md), 1 stays best.
   real lod = width > real(2) ? log2(width) - real(1) : real(0);
+  bool x_longer = dot(a, a) >= dot(b, b);
   return AnisotropicFootprint(clamp(lod, real(0), levels - real(1)), taps, major * e1 / size,
-                              minor * real2(-e1.y, e1.x) / size);
+                              minor * real2(-e1.y, e1.x) / size, width, x_longer ? duv_dx : duv_dy,
+                              x_longer ? duv_dy : duv_dx);
 }
 
 // The variance of the bilinear texture over a tap (a parallelogram with axes a, b in level-0

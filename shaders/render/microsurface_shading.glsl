@@ -223,8 +223,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
   else
     duv_dy += dot(duv_dy, parallax) >= 0.0 ? parallax : -parallax;
   AnisotropicFootprint f = anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kMaxAnisotropicTaps);
-  float width = max(length(f.minor * size), length(f.major * size) / f.taps);  // the taps' (anisotropic_footprint)
-  float point_weight = clamp(2.0 - width, 0.0, 1.0);
+  float point_weight = clamp(2.0 - f.width, 0.0, 1.0);
   MicrosurfaceMoments sum = MicrosurfaceMoments(vec4(0.0), vec4(0.0));
   vec3 albedo = vec3(0.0);
   for (float k = 0.0; k < f.taps; k += 1.0) {

@@ -415,9 +415,8 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   // filtered tiles the pixel's own parallelogram, whose sub-parallelograms' level-0 variance is exact
   // (linearised_tap_variance): along its longer edge, as many taps as the principal axes ask for; mip and
   // colormip lay their one row of taps along the principal major axis.
-  bool x_longer = dot(duv_dx * size, duv_dx * size) >= dot(duv_dy * size, duv_dy * size);
-  vec2 major = kTextureMethod >= 3u ? (x_longer ? duv_dx : duv_dy) : f.major;
-  vec2 minor = kTextureMethod >= 3u ? (x_longer ? duv_dy : duv_dx) : f.minor;
+  vec2 major = kTextureMethod >= 3u ? f.edge_long : f.major;
+  vec2 minor = kTextureMethod >= 3u ? f.edge_short : f.minor;
   vec2 tap_major = major * size / along, tap_minor = minor * size / split;  // one tap's axes, in texels
   vec3 colour = vec3(0.0);
   MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);

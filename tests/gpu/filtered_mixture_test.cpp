@@ -48,8 +48,7 @@ glm::dvec3 mixture_colour(const precompute::MomentMips& mips, const Colormap& ma
   }
   const double along = f.taps * split, lod = f.lod >= levels - 1 ? f.lod : std::max(f.lod - std::log2(split), 0.0);
   // The pixel's parallelogram, along its longer edge (the principal axes set the count and the level).
-  const bool x_longer = glm::dot(dx * size, dx * size) >= glm::dot(dy * size, dy * size);
-  const glm::dvec2 major = x_longer ? dx : dy, minor = x_longer ? dy : dx;
+  const glm::dvec2 major = f.edge_long, minor = f.edge_short;
   glm::dvec3 sum(0.0);
   for (int k = 0; k < along; ++k)
     for (int j = 0; j < split; ++j) {
