@@ -44,7 +44,7 @@ const Scene& runnable(const Scene& scene, const RenderMethod& method) {
     if (!m || !plane.size) continue;
     nodes += heightfield_trace_cost(*m, *plane.size).nodes;
   }
-  // Camera and shadow ray; filtered adds its statistics' shadow ray through the smoothed field (T5).
+  // Camera and shadow ray; filtered adds its statistics' shadow ray from a footprint out (T5).
   const int rays_per_sample = method.texture >= RenderMethod::Texture::Filtered ? 3 : 2;
   const std::int64_t bound = FACET_HEIGHTFIELD_SAMPLE_STEPS / rays_per_sample;
   if (nodes > bound)

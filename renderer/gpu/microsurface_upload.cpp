@@ -66,93 +66,18 @@ uint append_height_bounds(TextureData& data, uint vertex_level) {
   return first;
 }
 
-// The bounds of min-max chain `bounds` (count levels) over each node's 3 x 3 neighbourhood, wrapped
-// (the field repeats): they hold every smoothed surface of (T2) of a level below the node's. Each
-// node of such a level lies inside the node (the quadtree nests) and its corner heights average the
-// nodes of its level around the corner, which lie in the node or its neighbours. (The surface over
-// the traversal's leaf nodes is bounded by its own corners, render/heightfield_trace.glsl.) Laid out
-// as the chain it dilates, right after it.
-void append_dilated_bounds(TextureData& data, uint bounds, uint count) {
-  const uvec4 level0 = data.levels[bounds].info;
-  const uint span = heightfield_bound_span(static_cast<int>(level0.y), static_cast<int>(level0.z));
-  const size_t base = data.texels.size();
-  data.texels.grow(span);  // the texels between the levels are never read
-  for (uint l = 0; l < count; ++l) {
-    const uvec4 info = data.levels[bounds + l].info;
-    const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
-    const size_t offset = base + FACET_HEIGHTFIELD_BOUND_LEVEL(span, l);
-    data.levels.push_back({uvec4(offset, w, h, l)});
-    for (int j = 0; j < h; ++j)
-      for (int i = 0; i < w; ++i) {
-        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-        for (int dj = -1; dj <= 1; ++dj)
-          for (int di = -1; di <= 1; ++di) {
-            const int ni = ((i + di) % w + w) % w, nj = ((j + dj) % h + h) % h;
-            const vec4 b = data.texels[info.x + static_cast<size_t>(nj) * w + ni];
-            lo = std::min(lo, b.x);
-            hi = std::max(hi, b.y);
-          }
-        data.texels[offset + static_cast<size_t>(j) * w + i] = vec4(lo, hi, 0.0f, 0.0f);
-      }
-  }
-}
-
-// The corner heights of the smoothed surfaces (T2), levels 1 .. count - 1: corner (i, j) of level l
-// is the mean of the field over the (up to) four level-l nodes around it, wrapped, by area (the
-// vertex heights as stored; level 0 is the field itself).
-void append_corner_heights(TextureData& data, uint vertex_level, uint count) {
-  const uvec4 info = data.levels[vertex_level].info;
-  const int w = static_cast<int>(info.y), h = static_cast<int>(info.z);
-  const auto z = [&](int i, int j) -> double {
-    return data.texels[info.x + static_cast<size_t>(j % h) * w + (i % w)].x;
-  };
-  const std::vector<glm::uvec2> sizes = mip_chain_sizes(w, h);
-  // Per node of the current level: the sum of its cells' mean heights and its cell count.
-  std::vector<double> sum(static_cast<size_t>(w) * h), cells(sum.size(), 1.0);
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i)
-      sum[static_cast<size_t>(j) * w + i] = 0.25 * (z(i, j) + z(i + 1, j) + z(i, j + 1) + z(i + 1, j + 1));
-  for (uint l = 1; l < count; ++l) {
-    const int fw = static_cast<int>(sizes[l - 1].x), fh = static_cast<int>(sizes[l - 1].y);
-    const int lw = static_cast<int>(sizes[l].x), lh = static_cast<int>(sizes[l].y);
-    std::vector<double> s(static_cast<size_t>(lw) * lh, 0.0), c(s.size(), 0.0);
-    for (int j = 0; j < fh; ++j)
-      for (int i = 0; i < fw; ++i) {
-        const size_t from = static_cast<size_t>(j) * fw + i, to = static_cast<size_t>(j / 2) * lw + i / 2;
-        s[to] += sum[from];
-        c[to] += cells[from];
-      }
-    sum = std::move(s);
-    cells = std::move(c);
-    data.levels.push_back({uvec4(data.texels.size(), lw, lh, l - 1)});  // the chain starts at level 1
-    for (int j = 0; j < lh; ++j)
-      for (int i = 0; i < lw; ++i) {
-        double total = 0.0, area = 0.0;
-        for (int k = 0; k < 4; ++k) {
-          const int ni = (i - (k & 1) + lw) % lw, nj = (j - (k >> 1) + lh) % lh;
-          total += sum[static_cast<size_t>(nj) * lw + ni];
-          area += cells[static_cast<size_t>(nj) * lw + ni];
-        }
-        data.texels.push_back(vec4(static_cast<float>(total / area), 0.0f, 0.0f, 0.0f));
-      }
-  }
-}
-
-// Each node's four corner heights (z00, z10, z01, z11) in one texel, levels 0 .. count - 1: level 0
-// from the vertex heights (the cells), level l >= 1 from its corner grid (records corners + l), the
-// last corner wrapping to the first (the field repeats). The tracer loads a leaf's corners from here
-// in one fetch instead of four.
-void append_corner_quads(TextureData& data, uint vertex_level, uint corners, uint count) {
-  for (uint l = 0; l < count; ++l) {
-    const uvec4 grid = data.levels[l == 0 ? vertex_level : corners + l].info;
-    const uint w = grid.y, h = grid.z;
-    data.levels.push_back({uvec4(data.texels.size(), w, h, l)});
-    for (uint j = 0; j < h; ++j)
-      for (uint i = 0; i < w; ++i) {
-        const auto z = [&](uint a, uint b) { return data.texels[grid.x + static_cast<size_t>(b % h) * w + a % w].x; };
-        data.texels.push_back(vec4(z(i, j), z(i + 1, j), z(i, j + 1), z(i + 1, j + 1)));
-      }
-  }
+// Each cell's four vertex heights (z00, z10, z01, z11) in one texel, the last vertex wrapping to the
+// first (the field repeats): the tracer loads a cell's corners in one fetch instead of four, and the
+// point lookups of (H1)-(H2) read them too.
+void append_corner_quads(TextureData& data, uint vertex_level) {
+  const uvec4 grid = data.levels[vertex_level].info;
+  const uint w = grid.y, h = grid.z;
+  data.levels.push_back({uvec4(data.texels.size(), w, h, 0)});
+  for (uint j = 0; j < h; ++j)
+    for (uint i = 0; i < w; ++i) {
+      const auto z = [&](uint a, uint b) { return data.texels[grid.x + static_cast<size_t>(b % h) * w + a % w].x; };
+      data.texels.push_back(vec4(z(i, j), z(i + 1, j), z(i, j + 1), z(i + 1, j + 1)));
+    }
 }
 
 // The level-0 texels of the three chains, written in place (width * height each).
@@ -201,9 +126,8 @@ void fill_microsurface_level0(const MicrosurfaceMaterial& material, double z_off
 std::size_t microsurface_texels(const MicrosurfaceMaterial& material) {
   const int w = material.heights->width, h = material.heights->height;
   const std::size_t chain = mip_chain_texels(w, h), vertices = static_cast<std::size_t>(w) * h;
-  // The vertex level, three box-filtered chains, two min-max chains, the corner heights of levels
-  // 1.. and the corner quads of every level (add_microsurface).
-  return vertices + 3 * chain + 2 * std::size_t{heightfield_bound_span(w, h)} + (chain - vertices) + chain;
+  // The vertex level, three box-filtered chains, the min-max chain and the corner quads (add_microsurface).
+  return vertices + 3 * chain + std::size_t{heightfield_bound_span(w, h)} + vertices;
 }
 
 uint heightfield_bound_span(int width, int height) {
@@ -254,9 +178,7 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
                            level_texels(data, albedos));
   const uint count = static_cast<uint>(mip_chain_sizes(field.width, field.height).size());
   const uint bounds = append_height_bounds(data, first);
-  append_dilated_bounds(data, bounds, count);
-  append_corner_heights(data, first, count);
-  append_corner_quads(data, first, bounds + 2 * count - 1, count);
+  append_corner_quads(data, first);
 
   const auto add_map = [&](const std::optional<Colormap>& map) {
     if (!map) return FACET_NO_COLORMAP;

@@ -8,12 +8,10 @@
 //     albedo   (mean height_colormap(z) slope_colormap(|s|) over the patch, 0), for colormip.
 // Coarser levels are box means (append_mip_chain), i.e. the moments over the covered patches.
 // Then, for the tracer (render/heightfield_trace.glsl), built on the CPU: the min-max MIP of the cells
-// (min, max, -, -), `count` levels of the same sizes; the same bounds dilated over 3 x 3 nodes
-// (`count` levels); the corner heights of the smoothed surfaces of levels 1 .. count - 1 (z, -, -, -);
-// each node's four corner heights of levels 0 .. count - 1 in one texel (z00, z10, z01, z11): the
-// tracer's leaves, and at level 0 the point lookups of (H1)-(H2) (naive, filtered under magnification).
-// The two min-max chains take heightfield_bound_span texels each, the dilated one right after the
-// other, level l at FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after level 0 (unused texels between).
+// (min, max, -, -), `count` levels of the same sizes, in heightfield_bound_span texels, level l at
+// FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after level 0 (unused texels between); then each cell's four
+// vertex heights in one texel (z00, z10, z01, z11): the tracer's cells, and the point lookups of
+// (H1)-(H2) (naive, filtered under magnification).
 #pragma once
 
 #include <cstddef>

@@ -90,9 +90,8 @@ vec3 camera_ray(vec2 film) {
 }
 
 // Radiance of the hit `hit` of the camera ray o + t d through `film` (pixels); `pixel_step` is the film
-// distance to the neighbouring rays whose hits span the texture footprint; field_lambda: the level a
-// field hit was traced at (trace()).
-vec3 shade(vec3 o, vec3 d, Hit hit, float field_lambda, vec2 film, float pixel_step) {
+// distance to the neighbouring rays whose hits span the texture footprint.
+vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   if (hit.material == kNoHit) return globals.background.rgb;
   vec3 p = o + hit.t * d;
   vec3 n = normalize(hit.normal);
@@ -104,12 +103,12 @@ vec3 shade(vec3 o, vec3 d, Hit hit, float field_lambda, vec2 film, float pixel_s
   MicrosurfaceFieldSample field;
   field_hit = kHasMicrosurface && hit.primitive == kHeightField;
   if (field_hit)
-    field = microsurface_field_sample(m, hit, field_lambda, o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
+    field = microsurface_field_sample(m, hit, o, d, p, camera_ray(film + vec2(pixel_step, 0.0)),
                                       camera_ray(film + vec2(0.0, pixel_step)));
 #endif
   // One call of occluded() casts every shadow ray (each call of the height-field traversal is compiled
   // on its own): the hit's own, and for a filtered field hit shaded partly by statistics (w < 1) a
-  // second through the field smoothed to the traced level (microsurface_field_radiance). The origin is
+  // second for the statistics, through the field from a footprint out (microsurface_field_radiance). The origin is
   // offset by a distance relative to the scene's scale at p; less from a traced field's hits, which are
   // exact to a few float ulps where the field's detail is finer than the macro-surfaces' offset.
   vec2 visibility = vec2(1.0);
@@ -122,25 +121,23 @@ vec3 shade(vec3 o, vec3 d, Hit hit, float field_lambda, vec2 film, float pixel_s
     vec3 from_n = n;
     float offset = field_hit ? 1e-5 : 1e-4;
     bool lit = dot(n, l) > 0.0;
-    float lambda = 0.0;
     float field_skip = 0.0;
 #ifdef FACET_HEIGHT_FIELDS
     lit = lit && (!field_hit || field.w > 0.0);  // a filtered hit shaded by statistics alone needs no ray
-    if (k == 1) {  // Smith models the shadows of the detail finer than the traced level, this ray the rest's
+    if (k == 1) {  // Smith models the shadows of the detail within the footprint, this ray the rest's
       from = microsurface_flat_hit(hit, d);
       from_n = from.normal;
       offset = 1e-4;
-      lambda = field.lambda;
       lit = dot(from_n, l) > 0.0;
-      // S_lambda within a footprint's width of the hit is interpolated from the nodes whose moments the
-      // statistics shade (Smith covers their shadows): the ray meets the field from that far out, along the
-      // rectangle (docs/microsurface_filtering.md, "Shadows of the smoothed surface").
+      // The field within a footprint's width of the hit is the detail whose moments the statistics shade
+      // (Smith covers its shadows): the ray meets the field from that far out, along the rectangle
+      // (docs/microsurface_filtering.md, "Shadows beyond the footprint").
       float across = sqrt(max(1.0 - dot(from_n, l) * dot(from_n, l), 0.01));
       field_skip = microsurface_footprint_texels(field.fp) * m.albedo.w / across;
     }
 #endif
     vec3 origin = p + from_n * (offset * max(1.0, length(p)));
-    if (lit && occluded(origin, l, from, from_n, kTracesHeightFields, lambda, field_skip)) visibility[k] = 0.0;
+    if (lit && occluded(origin, l, from, from_n, kTracesHeightFields, field_skip)) visibility[k] = 0.0;
   }
 #ifdef FACET_HEIGHT_FIELDS
   if (field_hit) return microsurface_field_radiance(m, hit, field, d, n, l, visibility);
@@ -189,9 +186,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, float field_lambda, vec2 film, float pixel_s
 vec4 radiance(vec2 film, float pixel_step) {
   vec3 o = globals.camera_origin.xyz;
   vec3 d = camera_ray(film);
-  float field_lambda;
-  Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields, kTextureMethod >= 3u,
-                  camera_ray(film + vec2(pixel_step, 0.0)), camera_ray(film + vec2(0.0, pixel_step)), field_lambda);
+  Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields);
   if (kWritesAovs && hit.material != kNoHit) {
     vec3 n = normalize(hit.normal);
     aov_depth_normal = vec4(hit.t * dot(d, globals.camera_forward.xyz), dot(n, d) > 0.0 ? -n : n);
@@ -199,7 +194,7 @@ vec4 radiance(vec2 film, float pixel_step) {
     if (material_at(hit.material).kind.x != FACET_MATERIAL_MICROSURFACE)
       aov_uv_error.xy = surface_uv(hit, o + hit.t * d).uv;
   }
-  return vec4(shade(o, d, hit, field_lambda, film, pixel_step), hit.material == kNoHit ? 0.0 : 1.0);
+  return vec4(shade(o, d, hit, film, pixel_step), hit.material == kNoHit ? 0.0 : 1.0);
 }
 
 // filtered:adaptive's refinement renders listed pixels (tile.list.x > 0) anywhere in the frame.

@@ -4,9 +4,6 @@
 // stack: the ray walks from node to node in order along its path (docs/microsurface_filtering.md).
 // Silhouettes come for free: outside the rectangle there is no surface, and a ray that passes over
 // the field's bumps at a grazing angle misses them.
-// A ray may instead trace the field smoothed to level lambda = leaf + blend (docs/microsurface_filtering.md
-// (T2)): bilinear over the level-`leaf` nodes between their corner heights, blended with the next
-// level's surface; the traversal then stops at that level.
 // Loop bound: one step per MIP node visited, at most FACET_HEIGHTFIELD_MAX_STEPS per ray; the pass
 // refuses a patch whose bound on visited nodes passes it (heightfield_trace_cost).
 #ifndef FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
@@ -25,27 +22,21 @@ struct HeightFieldRay {
 };
 
 struct HeightField {
-  uint vertices;  // texture level of the vertex heights
-  uint bounds;    // texture level of min-max level 0 (one texel per cell); level `top` is 1 x 1
-  uint dilated;   // the same bounds over each node's 3 x 3 neighbourhood: they hold the smoothed surfaces
-  uint quads;     // quads + l: each level-l node's four corner heights in one texel
-  int leaf;       // the level whose nodes the ray intersects (0: cells)
-  float blend;    // toward the level leaf + 1 surface, in [0, 1)
-  // What stays fixed along the ray, loaded once instead of once per step: where level 0 of the bounds
-  // it tests starts (dilated when it traces a smoothed surface) and the texels of each bound chain
-  // (layout/heightfield_layout.glsl), and the records of the corner quads of levels leaf and leaf + 1
-  // (the latter only with blend > 0).
+  // What stays fixed along the ray, loaded once instead of once per step: where level 0 of the min-max
+  // bounds starts (one texel per cell; level `top` is 1 x 1), the texels of the chain
+  // (layout/heightfield_layout.glsl), and the record of the cells' corner quads (each cell's four
+  // vertex heights in one texel).
   uint bound_base, bound_span;
-  uvec4 leaf_corners, parent_corners;
+  uvec4 cell_corners;
   int top;
   ivec2 size;     // cells (= vertices) of one tile
   ivec2 tiles;    // tiles over the rectangle (the last may be cut)
   vec2 range;     // z over the whole field
 };
 
-// The record of microsurface m's level-0 corner quads: each cell's four vertex heights in one texel
-// (renderer/gpu/microsurface_upload.hpp).
-uint heightfield_quads(GpuMaterial m) { return m.kind.z + 3u * m.kind.w - 1u; }
+// The record of microsurface m's corner quads: each cell's four vertex heights in one texel, after
+// the min-max chain's kind.w levels (renderer/gpu/microsurface_upload.hpp).
+uint heightfield_quads(GpuMaterial m) { return m.kind.z + m.kind.w; }
 
 // (H1)-(H2) of docs/assets.md at texel coordinates q (vertex (i, j) at q = (i, j)) from the level-0
 // corner quads at texture level `quads` (heightfield_quads): (z, dz/dx, dz/dy), z about the
@@ -60,25 +51,18 @@ vec3 heightfield_point(uint quads, vec2 q, float delta) {
   return vec3(h, mix(z.y - z.x, z.w - z.z, f.y) / delta, mix(z.z - z.x, z.w - z.y, f.x) / delta);
 }
 
-// The field of microsurface m on `plane`, smoothed to level lambda (0: the field itself).
-HeightField heightfield_of(GpuMaterial m, GpuPlane plane, float lambda) {
+// The field of microsurface m on `plane`.
+HeightField heightfield_of(GpuMaterial m, GpuPlane plane) {
   HeightField f;
-  f.vertices = m.texture.x;
-  f.bounds = m.kind.z;
-  f.dilated = m.kind.z + m.kind.w;
-  f.quads = heightfield_quads(m);
   f.top = int(m.kind.w) - 1;
-  f.leaf = min(int(lambda), f.top);
-  f.blend = f.leaf < f.top ? lambda - float(f.leaf) : 0.0;
-  uint bounds0 = texture_level_at(f.bounds).info.x, dilated0 = texture_level_at(f.dilated).info.x;
-  f.bound_span = dilated0 - bounds0;  // the dilated chain follows the other (microsurface_upload.hpp)
-  f.bound_base = f.leaf > 0 || f.blend > 0.0 ? dilated0 : bounds0;
-  f.leaf_corners = texture_level_at(f.quads + uint(f.leaf)).info;
-  f.parent_corners = f.blend > 0.0 ? texture_level_at(f.quads + uint(f.leaf + 1)).info : uvec4(0u);
-  uvec4 info = texture_level_at(f.vertices).info;
+  f.bound_base = texture_level_at(m.kind.z).info.x;
+  // Level 1 starts span / 2 after level 0 (FACET_HEIGHTFIELD_BOUND_LEVEL); a 1 x 1 field has level 0 alone.
+  f.bound_span = f.top > 0 ? 2u * (texture_level_at(m.kind.z + 1u).info.x - f.bound_base) : 0u;
+  f.cell_corners = texture_level_at(heightfield_quads(m)).info;
+  uvec4 info = texture_level_at(m.texture.x).info;
   f.size = ivec2(info.yz);
   f.tiles = ivec2(ceil(2.0 * plane.uv_half_size.zw / (vec2(f.size) * m.albedo.w)));
-  f.range = texel_at(bounds0 + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, f.top)).xy;
+  f.range = texel_at(f.bound_base + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, f.top)).xy;
   return f;
 }
 
@@ -113,24 +97,9 @@ vec4 heightfield_extent(HeightField f, int level, ivec2 node, ivec2 tile) {
   return vec4(lo.x, hi.x, lo.y, hi.y);
 }
 
-// The corners (z00, z10, z01, z11) of a level's surface over its node n: one texel of the level's
-// corner quads (record `info`; microsurface_upload.hpp), at this address.
+// Where cell n's corners (z00, z10, z01, z11) lie: one texel of the corner quads (record `info`;
+// microsurface_upload.hpp).
 uint heightfield_corners_address(uvec4 info, ivec2 n) { return info.x + uint(n.y) * info.y + uint(n.x); }
-
-vec4 heightfield_node_corners(uvec4 info, ivec2 n) { return texel_at(heightfield_corners_address(info, n)); }
-
-// The corner heights (z00, z10, z01, z11) of the surface the ray sees over leaf node n (extent e),
-// given z, the leaf level's own corners of n: those blended with the next level's surface at the same
-// points (a bilinear patch of the parent node, so the blend is bilinear over n and continuous across nodes).
-vec4 heightfield_leaf_corners(HeightField f, int level, ivec2 n, ivec2 tile, vec4 e, vec4 z) {
-  if (f.blend <= 0.0) return z;
-  vec4 pe = heightfield_extent(f, level + 1, n >> 1, tile);
-  vec4 pz = heightfield_node_corners(f.parent_corners, n >> 1);
-  vec2 u = (e.xy - pe.x) / (pe.y - pe.x), v = (e.zw - pe.z) / (pe.w - pe.z);
-  vec4 coarse = vec4(heightfield_bilinear(pz, u.x, v.x), heightfield_bilinear(pz, u.y, v.x),
-                     heightfield_bilinear(pz, u.x, v.y), heightfield_bilinear(pz, u.y, v.y));
-  return mix(z, coarse, f.blend);
-}
 
 // The nodes of MIP level l along each axis of a tile (the sizes of mip_chain_sizes: ceil(size / 2^l)).
 ivec2 heightfield_nodes_per_tile(HeightField f, int level) { return (f.size + (1 << level) - 1) >> level; }
@@ -163,9 +132,9 @@ int heightfield_start_index(float o, float d, float inv_d, float t, float base, 
 // root rarely skip anything. Any node holding the ray at t is an exact start (nothing before t remains,
 // and the walk climbs to coarser nodes as it crosses their faces).
 int heightfield_start_level(HeightField f, HeightFieldRay r, float t, float t_end, bool from_inside) {
-  if (from_inside) return f.leaf;
+  if (from_inside) return 0;
   float span = length(r.d.xy) * (t_end - t);
-  return clamp(int(ceil(log2(max(span, 1.0)))), f.leaf, f.top);
+  return clamp(int(ceil(log2(max(span, 1.0)))), 0, f.top);
 }
 
 // The node of MIP level `level` of tile `tile` that holds the ray at t.
@@ -182,7 +151,7 @@ ivec2 heightfield_start_node(HeightField f, HeightFieldRay r, float t, ivec2 til
 // its neighbour across the exit face, entered at its coarsest ancestor the ray has not been in (across
 // a tile face, the next tile's node at heightfield_start_level); one it meets is descended into at the
 // child holding the ray where it first reaches the bounds. Nodes come in order along the ray, so the
-// first hit of a leaf is the nearest (shadow rays need no other), and no node is entered twice.
+// first hit of a cell is the nearest (shadow rays need no other), and no node is entered twice.
 float heightfield_search(HeightField f, HeightFieldRay r) {
   float margin_z = 1e-5 * (abs(r.o.z) + abs(f.range.x) + abs(f.range.y));
   vec2 tz_all = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, f.range.x - margin_z, f.range.y + margin_z);
@@ -192,8 +161,8 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
   vec2 tile_size = vec2(f.size);
   ivec2 tile = ivec2(heightfield_start_index(r.o.x, r.d.x, r.inv_d.x, t, 0.0, tile_size.x, tile_size.x * float(f.tiles.x), f.tiles.x),
                      heightfield_start_index(r.o.y, r.d.y, r.inv_d.y, t, 0.0, tile_size.y, tile_size.y * float(f.tiles.y), f.tiles.y));
-  // A ray starting inside the field's box, as shadow rays leaving the surface do, starts at the leaf
-  // under its origin: from a point on the surface, which every ancestor of that leaf holds, a descent
+  // A ray starting inside the field's box, as shadow rays leaving the surface do, starts at the cell
+  // under its origin: from a point on the surface, which every ancestor of that cell holds, a descent
   // would skip nothing.
   bool from_inside = t == 0.0;
   int level = heightfield_start_level(f, r, t, t_end, from_inside);
@@ -204,26 +173,21 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     float exit_y = heightfield_plane_t(r.o.y, r.d.y, r.inv_d.y, r.d.y > 0.0 ? e.w : e.z);
     float t_exit = min(min(exit_x, exit_y), t_end);
     ivec2 nodes = heightfield_nodes_per_tile(f, min(level, f.top));
-    bool leaf = level == f.leaf;
-    // A leaf is bounded by its own corners: a smoothed leaf lies between them and may pass the dilated
-    // bounds; a cell's min-max bound is their extremes (microsurface_upload). A leaf's corners and a
-    // node's bound are each one texel, so a step makes one load at the address its lane needs: lavapipe
-    // runs both sides of a branch its 8 lanes disagree on, which cost groups of leaf and node lanes two.
-    uint address = leaf ? heightfield_corners_address(f.leaf_corners, node)
+    bool cell = level == 0;
+    // A cell's min-max bound is the extremes of its corners (microsurface_upload). A cell's corners and
+    // a node's bound are each one texel, so a step makes one load at the address its lane needs: lavapipe
+    // runs both sides of a branch its 8 lanes disagree on, which cost groups of cell and node lanes two.
+    uint address = cell ? heightfield_corners_address(f.cell_corners, node)
                         : f.bound_base + FACET_HEIGHTFIELD_BOUND_LEVEL(f.bound_span, min(level, f.top)) +
                               uint(node.y * nodes.x + node.x);
-    vec4 texel = texel_at(address);
-    vec4 corners = vec4(0.0);
-    vec2 z = texel.xy;
-    if (leaf) {
-      corners = heightfield_leaf_corners(f, level, node, tile, e, texel);
-      z = vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
-               max(max(corners.x, corners.y), max(corners.z, corners.w)));
-    }
+    vec4 corners = texel_at(address);
+    vec2 z = cell ? vec2(min(min(corners.x, corners.y), min(corners.z, corners.w)),
+                         max(max(corners.x, corners.y), max(corners.z, corners.w)))
+                  : corners.xy;
     vec2 tz = heightfield_slab(r.o.z, r.d.z, r.inv_d.z, z.x - margin_z, z.y + margin_z);
     float t_in = max(t, tz.x);
     if (t_in <= min(t_exit, tz.y)) {
-      if (!leaf) {
+      if (!cell) {
         t = t_in;
         vec2 mid = min(e.xz + vec2(1 << (level - 1)), e.yw);
         ivec2 half_xy = ivec2(heightfield_half(r.o.x, r.d.x, r.inv_d.x, t, mid.x),
@@ -232,13 +196,8 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
         node = min(2 * node + half_xy, heightfield_nodes_per_tile(f, level) - 1);  // no upper half where the tile ends
         continue;
       }
-      // A cell is tested as the reference tests it, in texels; a coarser node in its own unit square.
-      // One call with the arguments selected: lanes at both kinds of leaf run one copy of the test.
-      bool cell = level == 0;
-      vec2 s = e.yw - e.xz;
-      vec3 o = cell ? r.o : vec3((r.o.xy - e.xz) / s, r.o.z), d = cell ? r.d : vec3(r.d.xy / s, r.d.z);
-      vec2 corner = cell ? e.xz : vec2(0.0);
-      float hit = heightfield_cell_hit(o, d, cell ? r.inv_d : 1.0 / d, corner.x, corner.y, corners, r.t_lo, r.t_hi);
+      // A cell is tested as the reference tests it, in texels.
+      float hit = heightfield_cell_hit(r.o, r.d, r.inv_d, e.x, e.z, corners, r.t_lo, r.t_hi);
       if (hit > 0.0) return hit;
     }
     if (t_exit >= t_end) break;

@@ -7,29 +7,26 @@
 #include "render/trace.glsl"
 #include "render/variant_code.glsl"
 
-// Where a field hit is shaded from: the pixel's footprint around it, the weight w of its traced
-// shading (1 but for filtered, which blends toward the statistics from two texels on, (T1)), and the
-// level lambda the camera ray traced the field at (T2), through which the statistics' light is traced.
+// Where a field hit is shaded from: the pixel's footprint around it and the weight w of its traced
+// shading (1 but for filtered, which blends toward the statistics from two texels on, (T1)).
 struct MicrosurfaceFieldSample {
   MicrosurfaceFootprint fp;
   float w;
-  float lambda;
 };
 
-// lambda: the level trace() traced the hit's field at.
-MicrosurfaceFieldSample microsurface_field_sample(GpuMaterial m, Hit hit, float lambda, vec3 o, vec3 d, vec3 p,
-                                                  vec3 d_dx, vec3 d_dy) {
+MicrosurfaceFieldSample microsurface_field_sample(GpuMaterial m, Hit hit, vec3 o, vec3 d, vec3 p, vec3 d_dx,
+                                                  vec3 d_dy) {
   GpuPlane plane = plane_at(hit.index);
   MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy, plane.normal.xyz);
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
   if (kTextureMethod >= 3u) fp = microsurface_footprint_on_surface(m, plane, o, d, p, d_dx, d_dy, fp);
 #endif
-  return MicrosurfaceFieldSample(fp, kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0, lambda);
+  return MicrosurfaceFieldSample(fp, kTextureMethod >= 3u ? microsurface_trace_weight(fp) : 1.0);
 }
 
 // The hit as the flat rectangle's, its normal facing the ray d: where filtered's statistics' shadow ray
 // starts, offset along that normal (above the field, a graph over the rectangle). It meets the other
-// objects and the field smoothed to the traced level: Smith models the shadows of the detail inside the
+// objects and the field beyond the footprint: Smith models the shadows of the detail inside the
 // footprint, the ray those the surface beyond it casts (docs/microsurface_filtering.md, "Shadows").
 Hit microsurface_flat_hit(Hit hit, vec3 d) {
   vec3 normal = plane_at(hit.index).normal.xyz;
@@ -39,7 +36,7 @@ Hit microsurface_flat_hit(Hit hit, vec3 d) {
 // naive (ss:K): the hit as the reference shades a sample, its light through every field (a field
 // shadows itself) and the other objects: visibility.x, which the caller traces when s.w > 0.
 // filtered: the same where the footprint is within a texel; from two texels on the footprint's
-// statistics around the traced hit, lit by visibility.y, the ray through the smoothed field; a blend
+// statistics around the traced hit, lit by visibility.y, the ray through the field beyond the footprint; a blend
 // between (T1). n: the hit's micro-normal facing the viewer.
 vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample s, vec3 d, vec3 n, vec3 l,
                                  vec2 visibility) {

@@ -12,7 +12,6 @@
 #define FACET_RENDER_MICROSURFACE_SHADING_GLSL
 #include "lib/beckmann_facet.glsl"
 #include "lib/lambert.glsl"
-#include "lib/analytic_intersect.glsl"
 #include "lib/microsurface_filter.glsl"
 #include "lib/texture_footprint.glsl"
 #include "render/heightfield_trace.glsl"
@@ -184,16 +183,6 @@ float microsurface_footprint_texels(MicrosurfaceFootprint fp) {
 // linear in between (docs/microsurface_filtering.md, "Across scales").
 float microsurface_trace_weight(MicrosurfaceFootprint fp) {
   return clamp(2.0 - microsurface_footprint_texels(fp), 0.0, 1.0);
-}
-
-// The level filtered traces the field at for the ray o + t d (T2): the MIP level of the footprint's
-// taps where the ray meets the flat rectangle, so features wider than about half the footprint are
-// traced and the rest are the statistics' (0: the field itself, also where the ray misses the plane).
-float microsurface_trace_level(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 d_dx, vec3 d_dy) {
-  float t = intersect_plane(o, d, plane.point.xyz, plane.normal.xyz, 0.0, 1e30);
-  if (t <= 0.0) return 0.0;
-  MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, o + t * d, d_dx, d_dy, plane.normal.xyz);
-  return anisotropic_footprint(fp.duv_dx, fp.duv_dy, fp.size, float(m.texture.y), kMaxAnisotropicTaps).lod;
 }
 
 // The radiance of microsurface `m` on `plane` by the statistics of footprint fp (methods mip, colormip,

@@ -36,13 +36,12 @@ bool is_height_field(GpuPlane plane, bool fields) {
   return kHasMicrosurface && fields && material_at(plane.material.x).kind.x == FACET_MATERIAL_MICROSURFACE;
 }
 
-// The first hit of o + t d, t in (0, t_max), with the height field of microsurface plane i smoothed
-// to level lambda (0: the field), or -1.
-float trace_height_field(uint i, vec3 o, vec3 d, float t_max, float lambda, out vec2 q) {
+// The first hit of o + t d, t in (0, t_max), with the height field of microsurface plane i, or -1.
+float trace_height_field(uint i, vec3 o, vec3 d, float t_max, out vec2 q) {
   GpuPlane plane = plane_at(i);
   GpuMaterial m = material_at(plane.material.x);
   HeightFieldRay r = heightfield_ray(m, plane, o, d, t_max);
-  float t = heightfield_search(heightfield_of(m, plane, lambda), r);
+  float t = heightfield_search(heightfield_of(m, plane), r);
   q = clamp(r.o.xy + t * r.d.xy, vec2(0.0), 2.0 * plane.uv_half_size.zw / m.albedo.w);
   return t;
 }
@@ -86,28 +85,19 @@ bool inside_plane_rectangle(GpuPlane plane, vec3 p) {
   return abs(dot(r, plane.tangent.xyz)) <= plane.uv_half_size.z && abs(dot(r, bitangent)) <= plane.uv_half_size.w;
 }
 
-// With `smoothed` (filtered), each field is traced at the level its footprint spans (T2), from the
-// rays d_dx, d_dy through the neighbouring pixels; field_lambda: the level of the hit when it is a field's.
-Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, vec3 d_dx, vec3 d_dy,
-          out float field_lambda) {
+Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields) {
   Hit hit = Hit(t_max, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0));
-  field_lambda = 0.0;
   for (uint i = 0u; i < globals.counts.x; ++i) {
     GpuPlane plane = plane_at(i);
 #ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(plane, fields)) {
       vec2 q;
       GpuMaterial m = material_at(plane.material.x);
-      float lambda = 0.0;
-#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
-      if (smoothed) lambda = microsurface_trace_level(m, plane, o, d, d_dx, d_dy);
-#endif
-      float t = trace_height_field(i, o, d, hit.t, lambda, q);
+      float t = trace_height_field(i, o, d, hit.t, q);
       if (t > t_min) {
         vec3 s = heightfield_point(heightfield_quads(m), q, m.albedo.w);
         vec3 normal = plane.normal.xyz - s.y * plane.tangent.xyz - s.z * cross(plane.normal.xyz, plane.tangent.xyz);
         hit = Hit(t, normal, plane.material.x, kHeightField, i, q);
-        field_lambda = lambda;
       }
       continue;
     }
@@ -132,9 +122,9 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields, bool smoothed, 
 // stops at the first occluder. Two primitives are skipped because they provably cannot block it: the
 // plane `from` lies on (the ray leaves it and never returns), and `from`'s sphere when the ray leaves
 // its outside (a convex body lies entirely behind its tangent plane; from inside, n points inwards
-// and the far wall does block). With `fields`, microsurfaces' height fields are traced, smoothed to
-// level lambda (T2; 0: the fields themselves), from field_skip along the ray on (the other objects from o).
-bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float lambda, float field_skip) {
+// and the far wall does block). With `fields`, microsurfaces' height fields are traced from field_skip
+// along the ray on (the other objects from o).
+bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float field_skip) {
   uint skip_plane = from.primitive == kPlane ? from.index : kNoHit;
   uint skip_sphere = from.primitive == kSphere && dot(from.normal, n) > 0.0 ? from.index : kNoHit;
   for (uint i = 0u; i < globals.counts.x; ++i) {
@@ -142,7 +132,7 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float lambda, float
 #ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(plane, fields)) {  // a field shadows itself: never skipped
       vec2 q;
-      if (trace_height_field(i, o + field_skip * l, l, kInfinity, lambda, q) > 0.0) return true;
+      if (trace_height_field(i, o + field_skip * l, l, kInfinity, q) > 0.0) return true;
       continue;
     }
 #endif

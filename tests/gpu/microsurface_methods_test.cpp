@@ -101,7 +101,7 @@ TEST(MicrosurfaceMethods, GlossyFilteredIsCloseToTheReference) {
 
 // T4: where footprints span a few texels at a grazing view, the flanks facing the viewer cover far
 // less of the field than the flat rectangle's footprint says. slope scene at 160 x 90 against an 8 x 8
-// reference: filtered RMSE 0.028 with the footprint on the traced surface, 0.038 with the flat one.
+// reference: filtered RMSE 0.030 with the footprint on the traced surface, 0.038 with the flat one.
 TEST(MicrosurfaceMethods, FilteredFootprintLiesOnTheTracedSurface) {
   auto context = test::make_validated_context();
   const Scene s = scene("microsurface_slope");
@@ -134,10 +134,10 @@ TEST(MicrosurfaceMethods, FilteredPerStratumConverges) {
 
 // A steep field (slope sigma ~3.5 across, scenes/microsurface_steep.json) under a grazing light: most of
 // a footprint's shadow falls from bumps beyond it, which the footprint's own statistics (Smith) do not
-// see, so the statistical term's light is traced through the field smoothed to the footprint's level
-// (docs/microsurface_filtering.md, "Shadows"). Row-mean error at 160 x 90 against an 8 x 8 reference:
-// 0.060 without that ray (every row too bright), 0.019 with it from the hit, 0.017 from one footprint out
-// (b77f09a); naive 0.005.
+// see, so the statistical term's light is traced through the field from one footprint out
+// (docs/microsurface_filtering.md, "Shadows beyond the footprint"). Row-mean error at 160 x 90 against an
+// 8 x 8 reference: 0.060 without that ray (every row too bright), 0.017 through the field smoothed to the
+// footprint's level (b77f09a), 0.0074 through the field itself; naive 0.005.
 TEST(MicrosurfaceMethods, StatisticsAreShadowedByTheTracedSurface) {
   auto context = test::make_validated_context();
   const Scene s = scene("microsurface_steep");
