@@ -10,7 +10,7 @@
 #include "common/phase_timings.hpp"
 #include "image/error_estimate_quality.hpp"
 #include "image/image_comparison.hpp"
-#include "report/camera_path_errors.hpp"
+#include "report/camera_path_series.hpp"
 #include "report/timing.hpp"
 
 namespace facet::report {
@@ -33,7 +33,7 @@ struct BenchRecord {
   // per pixel, counted by its instrumented render pass (gpu/work_per_pixel.hpp); unset: not measured.
   std::optional<double> probe_fma_per_second;
   std::optional<double> work_fma_per_pixel, reads_per_pixel;
-  std::optional<CameraPathSeries> path;  // along the scene's camera path (report/camera_path_errors.hpp)
+  std::optional<CameraPathSeries> path;  // along the scene's camera path (report/camera_path_series.hpp)
 
   bool ok() const { return !error.has_value(); }
   double time_ms() const { return timing.headline().median; }

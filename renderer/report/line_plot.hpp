@@ -1,6 +1,6 @@
 // Curves on linear axes as standalone SVG, the shape of the report's small plots: the error estimates'
 // calibration (report/calibration_plot.hpp) and the per-frame error along a camera path
-// (report/camera_path_errors.hpp).
+// (report/camera_path_series.hpp).
 #pragma once
 
 #include <string>

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "common/content_hash.hpp"
-#include "report/camera_path_errors.hpp"
+#include "report/camera_path_series.hpp"
 #include "report/headline.hpp"
 #include "report/method_catalogue.hpp"
 #include "report/pareto.hpp"
