@@ -406,7 +406,11 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   vec2 size = vec2(level0.yz);
   AnisotropicFootprint f = anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kMaxAnisotropicTaps);
   // Within one texel a single tap is exact up to the linearised variance: no split (magnification).
-  float split = kTextureMethod >= 3u && length(f.major * size) > 1.0 ? kFilteredSplit : 1.0;
+  // filtered:adaptive's refinement (a listed dispatch) tiles a pixel with its K x K strata already: each
+  // stratum splits only as far as needed to tile the pixel twice as finely per axis as the first pass,
+  // so from K = 4 on it keeps one row of taps (docs/error_estimate.md, "Refined strata").
+  float refined_split = max(1.0, ceil(2.0 * kFilteredSplit / float(tile.stratum.w)));
+  float split = kTextureMethod >= 3u && length(f.major * size) > 1.0 ? (tile.list.x == 0u ? kFilteredSplit : refined_split) : 1.0;
   float along = f.taps * split;
   // Each tap is a split-th of the whole footprint's per axis: one level finer per halving, except where
   // the whole footprint was clamped to the coarsest level (its own width is unknown there).

@@ -89,20 +89,22 @@ TEST(AdaptiveRefinement, RanksByEstimateAndCutsAtTheBudget) {
   EXPECT_EQ(gpu::pixels_within_time(10.0, 0.0, 7), 7u);  // nothing measured yet costs nothing
 }
 
-// With an error budget E the pixels whose first-pass estimate exceeds E are filtered:ss:4's pixels and all
+// With an error budget E the pixels whose first-pass estimate exceeds E are filtered:ss:2's pixels and all
 // others filtered's: the first pass is `filtered --aov error` (the same program), the second renders the
-// listed pixels' strata as filtered:ss:4 renders them. A time budget cuts the same ranking.
+// listed pixels' strata as filtered:ss:2 renders them (from K = 4 on a refined stratum lays one row of
+// taps where filtered:ss:K splits it: docs/error_estimate.md, "Refined strata"). A time budget cuts the
+// same ranking.
 TEST(AdaptiveRefinement, RefinedPixelsAreFilteredPerStratumAndTheRestFiltered) {
   auto context = test::make_validated_context();
   const Scene scene = objects_scene();
   const Image first = render(*context, scene, method("filtered", {}, true));
-  const Image strata = render(*context, scene, method("filtered:ss:4"));
+  const Image strata = render(*context, scene, method("filtered:ss:2"));
   const std::vector<float> estimate = error_channel(first);
   std::vector<float> sorted = estimate;
   std::ranges::sort(sorted);
   const double budget = sorted[sorted.size() * 3 / 4];  // about a quarter of the pixels above it
   gpu::RenderStats stats;
-  const Image adaptive = render(*context, scene, method("filtered:adaptive", error_budget(budget)), &stats);
+  const Image adaptive = render(*context, scene, method("filtered:adaptive:2", error_budget(budget)), &stats);
   std::size_t refined = 0, differing_strata = 0;
   for (std::size_t i = 0; i < estimate.size(); ++i) {
     const bool refine = estimate[i] > budget;
@@ -126,8 +128,9 @@ TEST(AdaptiveRefinement, RefinedPixelsAreFilteredPerStratumAndTheRestFiltered) {
 
 // Against a 16x16 reference: the default budget (2 more rays per pixel on average) and an error budget
 // that refines every pixel with a non-zero estimate each lower filtered's error, the larger budget more.
-// Measured (64x36, 2026-11-26): filtered 0.0422, default 0.0223, every estimated pixel 0.0104 (= filtered:ss:4:
-// the pixels estimated exact are those the strata leave unchanged).
+// Measured (64x36, 2026-11-27): filtered 0.0381, default 0.0142, every estimated pixel 0.0096 (filtered:ss:4
+// 0.0094: the pixels estimated exact are those the strata leave unchanged; the refined strata lay one row of
+// taps where filtered:ss:4 splits them).
 TEST(AdaptiveRefinement, ConvergesTowardTheReferenceAsTheBudgetGrows) {
   auto context = test::make_validated_context();
   const Scene scene = objects_scene();
