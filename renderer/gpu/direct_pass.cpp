@@ -195,7 +195,11 @@ double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, in
   const uint32_t blocks = groups.x * groups.y;
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const int k = samples_per_axis_;
-  const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread, uvec4(0)};
+  // The estimate costs another colour-map integral per tap: only the error channel and the refinement's
+  // ranking need it, not the other AOVs.
+  const uint32_t skip_estimate = aovs_.error || adaptive_samples_per_axis_ > 0 ? 0 : 1;
+  const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread,
+                     uvec4(0, skip_estimate, 0, 0)};
   return kernel_->dispatch(bindings, &tile, groups);
 }
 

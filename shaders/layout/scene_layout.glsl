@@ -99,7 +99,8 @@ struct GpuTile {
                   // s = K^2 - 1 scales them by 1/K^2); w: K
   uvec4 spread;   // x: the tile's workgroups n, y: s, coprime to n: workgroup g renders block g s mod n (gpu/workgroup_order.hpp)
   uvec4 list;     // x: 0 renders the rectangle; n > 0 renders the n pixels of the pixel list instead (filtered:adaptive);
-                  // y: 1 leaves out the texture's error estimate (a refinement whose frame has no `error` channel)
+                  // y: 1 leaves out the texture's error estimate (a frame without an `error` channel, or its
+                  // refinement: filtered:adaptive's first pass ranks by it)
 };
 
 #endif
