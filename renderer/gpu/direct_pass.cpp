@@ -195,11 +195,8 @@ double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, in
   const uint32_t blocks = groups.x * groups.y;
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const int k = samples_per_axis_;
-  // The estimate costs another colour-map integral per tap: only the error channel and the refinement's
-  // ranking need it, not the other AOVs.
-  const uint32_t skip_estimate = aovs_.error || adaptive_samples_per_axis_ > 0 ? 0 : 1;
   const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread,
-                     uvec4(0, skip_estimate, 0, 0)};
+                     uvec4(0, skips_estimate(false), 0, 0)};
   return kernel_->dispatch(bindings, &tile, groups);
 }
 
@@ -209,10 +206,14 @@ double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, st
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const int k = adaptive_samples_per_axis_;
   const auto n = static_cast<uint32_t>(count);
-  // The refined pixels' estimate is only written out: without an `error` channel it is left out.
   const GpuTile tile{uvec4(0, 0, n, 1), uvec4(stratum % k, stratum / k, stratum, k), spread,
-                     uvec4(n, aovs_.error ? 0 : 1, 0, 0)};
+                     uvec4(n, skips_estimate(true), 0, 0)};
   return kernel_->dispatch(bindings, &tile, glm::uvec3(blocks, 1, 1));
+}
+
+uint32_t DirectPass::skips_estimate(bool refining) const {
+  const bool ranks = !refining && adaptive_samples_per_axis_ > 0;  // the refined pixels' is only written out
+  return aovs_.error || ranks ? 0u : 1u;
 }
 
 void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,

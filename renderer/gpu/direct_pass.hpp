@@ -64,6 +64,9 @@ class DirectPass {
   // Renders stratum `stratum` of K x K (K = adaptive_samples_per_axis_) into pixels_ for the first
   // `count` pixels of pixel_list_; its device ms.
   double dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum);
+  // GpuTile::list.y of a dispatch: 1 leaves the texture's error estimate out (another colour-map integral
+  // per tap). Only the error channel needs it, and filtered:adaptive's first pass, which ranks by it.
+  uint32_t skips_estimate(bool refining) const;
   // filtered:adaptive: renders the pixels with the largest estimated error (aovs[i].error, with the
   // first pass's edge term `edge`) again with K x K strata, within the budget, into `image` and `aovs`;
   // `stats` holds the first pass's time.
