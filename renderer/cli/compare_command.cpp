@@ -23,6 +23,7 @@
 #include "image/image_file.hpp"
 #include "image/metrics.hpp"
 #include "image/png_io.hpp"
+#include "image/stored_precision.hpp"
 
 namespace facet::cli {
 
@@ -64,10 +65,12 @@ void write_heatmap(const CompareOptions& options, const Image& test, const Image
 }
 
 // A frame with an `error` channel (`--aov error`): how its estimate ranks and sizes the true per-pixel
-// error (the mean absolute error over R, G, B) over the pixels its A channel marks as covered (all
-// pixels without A), within --crop if given; docs/error_estimate.md.
-void add_error_estimate_quality(const std::filesystem::path& path, const std::vector<int>& region, const Image& test,
-                                const Image& reference, nlohmann::json& result) {
+// error (the mean absolute error over R, G, B, at the resolution both files store: resolved_error_map) over
+// the pixels its A channel marks as covered (all pixels without A), within --crop if given;
+// docs/error_estimate.md.
+void add_error_estimate_quality(const std::filesystem::path& path, const std::filesystem::path& reference_path,
+                                const std::vector<int>& region, const Image& test, const Image& reference,
+                                nlohmann::json& result) {
   if (path.extension() != ".exr" || !exr_has_channel(path, "error")) return;
   ScalarImage estimate = read_exr_scalar(path, "error");
   ScalarImage coverage = exr_has_channel(path, "A") ? read_exr_scalar(path, "A") : ScalarImage(estimate.width, estimate.height, 1.0f);
@@ -76,8 +79,10 @@ void add_error_estimate_quality(const std::filesystem::path& path, const std::ve
     estimate = crop(estimate, rect);
     coverage = crop(coverage, rect);
   }
-  const std::optional<ErrorEstimateQuality> quality =
-      judge_covered_pixels(estimate.values, absolute_error_map(test, reference).values, coverage.values);
+  const std::optional<ErrorEstimateQuality> quality = judge_covered_pixels(
+      estimate.values,
+      resolved_error_map(test, reference, stored_precision(path), stored_precision(reference_path)).values,
+      coverage.values);
   if (quality) result.update(to_json(*quality));
 }
 
@@ -125,7 +130,8 @@ int run_compare(const CompareOptions& options) {
     result["width"] = tests[i].image.width;
     result["height"] = tests[i].image.height;
     if (!options.heatmap.empty()) write_heatmap(options, tests[i].image, reference.image, result);
-    add_error_estimate_quality(options.images[i], options.crop, tests[i].image, reference.image, result);
+    add_error_estimate_quality(options.images[i], options.images.back(), options.crop, tests[i].image, reference.image,
+                               result);
     const std::string failed = failed_thresholds(comparisons[i], thresholds);
     if (!failed.empty()) {
       std::cerr << "facet: compare: failed: " << (sheet ? options.images[i].string() + ": " : "") << failed << "\n";

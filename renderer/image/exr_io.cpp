@@ -290,4 +290,15 @@ bool exr_has_channel(const std::filesystem::path& path, const std::string& chann
                    [&](Imf::InputFile& input) { return input.header().channels().findChannel(channel) != nullptr; });
 }
 
+ExrPixelType exr_colour_type(const std::filesystem::path& path) {
+  return read_with(path, [&](Imf::InputFile& input) {
+    const Imf::ChannelList& channels = input.header().channels();
+    const Imf::Channel* colour = channels.findChannel("R");
+    if (colour == nullptr) colour = channels.findChannel("Y");
+    if (colour == nullptr)
+      throw std::runtime_error("has neither R, G, B nor Y channels (has " + channel_names(channels) + ")");
+    return colour->type == Imf::HALF ? ExrPixelType::Half : ExrPixelType::Float;
+  });
+}
+
 }  // namespace facet

@@ -51,4 +51,8 @@ ScalarImage read_exr_scalar(const std::filesystem::path& path, const std::string
 // Whether the file has a channel of that name.
 bool exr_has_channel(const std::filesystem::path& path, const std::string& channel);
 
+// How read_exr's colours are stored: Half if the R channel (Y in a luminance-only file) holds halves,
+// else Float (float, or 32-bit integers, which floats hold to within their own rounding).
+ExrPixelType exr_colour_type(const std::filesystem::path& path);
+
 }  // namespace facet

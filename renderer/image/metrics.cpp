@@ -83,6 +83,13 @@ ScalarImage absolute_error_map(const Image& test, const Image& reference) {
   return per_pixel_mean(test, reference, [](double a, double b) { return std::abs(a - b); });
 }
 
+ScalarImage resolved_error_map(const Image& test, const Image& reference, const StoredPrecision& test_precision,
+                               const StoredPrecision& reference_precision) {
+  return per_pixel_mean(test, reference, [&](double a, double b) {
+    return std::max(std::abs(a - b) - rounding_bound(a, test_precision) - rounding_bound(b, reference_precision), 0.0);
+  });
+}
+
 ScalarImage relative_error_map(const Image& test, const Image& reference, double epsilon) {
   return per_pixel_mean(test, reference,
                         [epsilon](double a, double b) { return squared_error(a, b) / (b * b + epsilon); });

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "image/image.hpp"
+#include "image/stored_precision.hpp"
 
 namespace facet {
 
@@ -30,6 +31,13 @@ double max_abs_error(const Image& test, const Image& reference);
 // Per-pixel maps for heat maps: mean over channels of |a - b|, and of (a - b)^2 / (b^2 + ε).
 ScalarImage absolute_error_map(const Image& test, const Image& reference);
 ScalarImage relative_error_map(const Image& test, const Image& reference, double epsilon = kRelativeMseEpsilon);
+
+// absolute_error_map at the resolution the two images were stored with: each sample's |a - b| less the
+// most rounding a and b can carry (rounding_bound), not below 0. The true error an error estimate is
+// judged against: a half-float reference rounds an exactly shaded pixel by up to 3e-4 of its value,
+// which would otherwise rank it among the erring ones.
+ScalarImage resolved_error_map(const Image& test, const Image& reference, const StoredPrecision& test_precision,
+                               const StoredPrecision& reference_precision);
 
 // Throws facet::Error unless both are non-empty, of equal size, and finite everywhere.
 void check_comparable(const Image& test, const Image& reference);
