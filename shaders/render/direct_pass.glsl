@@ -20,6 +20,9 @@
 //                      span and the words each slice starts cells in (render/diffraction_bindings.glsl)
 //   kWritesAovs        the auxiliary outputs (depth, normal, uv, error estimate) are accumulated in
 //                      the pixel buffer after the colours (renderer/gpu/direct_pass.cpp, docs/aov.md)
+//   kEstimatesError    some dispatch computes the texture's error estimate (the error channel, or
+//                      filtered:adaptive's ranking; GpuTile::list.y leaves it out per dispatch); without,
+//                      its code is compiled out, for lavapipe runs a skipped branch masked all the same
 //   kCountsWork        each sample's work replaces its colour: (FMA-equivalents, texel fetches, 0, 1),
 //                      counted by increments renderer/gpu/work_counter.hpp adds to the SPIR-V
 //                      (docs/render_speed.md, "Work per pixel"); off, the counters are dead code
@@ -49,6 +52,7 @@ layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICES) const uint kPreinte
 layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS) const uint kPreintegratedSliceWords = 0xffffffffu;
 layout(constant_id = FACET_RENDER_SPEC_AOVS) const bool kWritesAovs = false;
 layout(constant_id = FACET_RENDER_SPEC_COUNTS_WORK) const bool kCountsWork = false;
+layout(constant_id = FACET_RENDER_SPEC_ESTIMATES_ERROR) const bool kEstimatesError = false;  // render/texture_sampling.glsl
 layout(constant_id = FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS) const bool kHasLinearColormaps = true;
 layout(constant_id = FACET_RENDER_SPEC_HAS_STEP_COLORMAPS) const bool kHasStepColormaps = true;
 layout(constant_id = FACET_RENDER_SPEC_WHOLE_MIP_TEXELS) const bool kWholeMipTexels = false;  // render/texture_sampling.glsl

@@ -1,7 +1,7 @@
 // Colour-mapped textures in the direct pass: bilinear and trilinear lookups of the MIP chains, the
 // colour map at a point and against a Gaussian, and the albedo of a texture by the method selected
-// with the specialization constants kTextureMethod, kWritesAovs, kHasLinearColormaps and kHasStepColormaps
-// and kWholeMipTexels (declared by the including shader).
+// with the specialization constants kTextureMethod, kEstimatesError, kHasLinearColormaps,
+// kHasStepColormaps and kWholeMipTexels (declared by the including shader).
 #ifndef FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #define FACET_RENDER_TEXTURE_SAMPLING_GLSL
 #include "lib/colormap_filter.glsl"
@@ -395,11 +395,12 @@ const float kFilteredSplit = 2.0;
 // level finer), and integrates the colour map against each tap's own Gaussian: the pixel's value law
 // is the mixture of the taps' (eq. M1), not one Gaussian of the pooled moments. `spread` is the mean
 // of the taps' colour spreads (colormap_spread, eq. M2) where the error estimate is written
-// (kWritesAovs and filtered, unless the dispatch leaves it out), else 0.
+// (kEstimatesError and filtered, unless the dispatch leaves it out), else 0.
 vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 spread) {
   spread = vec3(0.0);
-  // A dispatch may leave the estimate out (GpuTile::list.y; uniform, so the skipped loop costs nothing).
-  bool estimates = kWritesAovs && kTextureMethod == 3u && tile.list.y == 0u;
+  // A pipeline without kEstimatesError has no estimate code; one with it may leave the estimate out per
+  // dispatch (GpuTile::list.y: the spread's loops then run one masked trip per tap).
+  bool estimates = kEstimatesError && kTextureMethod == 3u && tile.list.y == 0u;
   GpuColormap map = colormap_record(m.texture.w);
   if (kTextureMethod == 0u) return colormap_at(map, sample_level(m.texture.x, uv).x);
   uvec4 level0 = texture_level_at(m.texture.x).info;

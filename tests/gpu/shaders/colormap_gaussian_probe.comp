@@ -9,7 +9,7 @@
 
 layout(local_size_x = 64) in;
 layout(constant_id = FACET_RENDER_SPEC_TEXTURE_METHOD) const uint kTextureMethod = 4u;
-const bool kWritesAovs = false;  // texture_sampling.glsl's own use of the spread is not probed here
+const bool kEstimatesError = false;  // texture_sampling.glsl's own use of the spread is not probed here
 // Both kinds of colour map, as in a scene that has both: lanes of step and linear maps side by side.
 const bool kHasLinearColormaps = true;
 const bool kHasStepColormaps = true;
