@@ -70,6 +70,14 @@ bool uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
   return false;
 }
 
+// Whether a microsurface of the scene has this part (height or slope colour map, specular lobe).
+template <typename Part>
+bool some_microsurface_has(const Scene& scene, Part part) {
+  for (const Material& m : scene.materials)
+    if (const auto* s = std::get_if<MicrosurfaceMaterial>(&m); s && ((*s).*part).has_value()) return true;
+  return false;
+}
+
 // Whether every MIP chain the pass looks up bilinearly (colour-mapped textures, a microsurface's box-filtered
 // chains) has whole texels on every level: level-0 sizes that are powers of two (mip_chain_sizes halves
 // them to 1 x 1), so the shader may take lib/mip_grid.glsl's shortcut.
@@ -108,6 +116,11 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_HAS_STEP_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Steps) ? 1u : 0u},
       {FACET_RENDER_SPEC_WHOLE_MIP_TEXELS, mip_texels_are_whole(scene) ? 1u : 0u},
       {FACET_RENDER_SPEC_ESTIMATES_ERROR, estimates_error(method) ? 1u : 0u},
+      {FACET_RENDER_SPEC_MICROSURFACE_HEIGHT_MAPS,
+       some_microsurface_has(scene, &MicrosurfaceMaterial::height_colormap) ? 1u : 0u},
+      {FACET_RENDER_SPEC_MICROSURFACE_SLOPE_MAPS,
+       some_microsurface_has(scene, &MicrosurfaceMaterial::slope_colormap) ? 1u : 0u},
+      {FACET_RENDER_SPEC_MICROSURFACE_LOBES, some_microsurface_has(scene, &MicrosurfaceMaterial::specular) ? 1u : 0u},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};

@@ -55,7 +55,10 @@
 #define FACET_RENDER_SPEC_HAS_STEP_COLORMAPS 13
 #define FACET_RENDER_SPEC_WHOLE_MIP_TEXELS 14
 #define FACET_RENDER_SPEC_ESTIMATES_ERROR 15
-#define FACET_RENDER_SPEC_COUNT 16
+#define FACET_RENDER_SPEC_MICROSURFACE_HEIGHT_MAPS 16
+#define FACET_RENDER_SPEC_MICROSURFACE_SLOPE_MAPS 17
+#define FACET_RENDER_SPEC_MICROSURFACE_LOBES 18
+#define FACET_RENDER_SPEC_COUNT 19
 
 // The code a variant of the program compiles in: its FACET_VARIANT_CODE is a sum of these
 // (render/direct_pass.glsl; shaders/CMakeLists.txt lists the variants, renderer/gpu/direct_pass_variant.hpp

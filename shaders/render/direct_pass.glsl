@@ -23,6 +23,9 @@
 //   kEstimatesError    some dispatch computes the texture's error estimate (the error channel, or
 //                      filtered:adaptive's ranking; GpuTile::list.y leaves it out per dispatch); without,
 //                      its code is compiled out, for lavapipe runs a skipped branch masked all the same
+//   kMicrosurfaceHeightMaps, kMicrosurfaceSlopeMaps, kMicrosurfaceLobes  some microsurface of the scene has
+//                      a height colour map, a slope colour map, a specular lobe: the others' code is left
+//                      out (render/microsurface_shading.glsl), for the same reason
 //   kCountsWork        each sample's work replaces its colour: (FMA-equivalents, texel fetches, 0, 1),
 //                      counted by increments renderer/gpu/work_counter.hpp adds to the SPIR-V
 //                      (docs/render_speed.md, "Work per pixel"); off, the counters are dead code
@@ -53,6 +56,9 @@ layout(constant_id = FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS) const uint kPr
 layout(constant_id = FACET_RENDER_SPEC_AOVS) const bool kWritesAovs = false;
 layout(constant_id = FACET_RENDER_SPEC_COUNTS_WORK) const bool kCountsWork = false;
 layout(constant_id = FACET_RENDER_SPEC_ESTIMATES_ERROR) const bool kEstimatesError = false;  // render/texture_sampling.glsl
+layout(constant_id = FACET_RENDER_SPEC_MICROSURFACE_HEIGHT_MAPS) const bool kMicrosurfaceHeightMaps = true;
+layout(constant_id = FACET_RENDER_SPEC_MICROSURFACE_SLOPE_MAPS) const bool kMicrosurfaceSlopeMaps = true;
+layout(constant_id = FACET_RENDER_SPEC_MICROSURFACE_LOBES) const bool kMicrosurfaceLobes = true;
 layout(constant_id = FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS) const bool kHasLinearColormaps = true;
 layout(constant_id = FACET_RENDER_SPEC_HAS_STEP_COLORMAPS) const bool kHasStepColormaps = true;
 layout(constant_id = FACET_RENDER_SPEC_WHOLE_MIP_TEXELS) const bool kWholeMipTexels = false;  // render/texture_sampling.glsl

@@ -18,12 +18,14 @@
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
 
-// height_colormap(z) slope_colormap(|s|), each factor only when the material has it.
+// height_colormap(z) slope_colormap(|s|), each factor only when the material has it (and the scene's
+// pipeline the code: kMicrosurfaceHeightMaps, kMicrosurfaceSlopeMaps, declared by the including shader).
 vec3 microsurface_height_colour(GpuMaterial m, float z) {
-  return m.texture.z == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormap_record(m.texture.z), z + m.params.z);
+  return !kMicrosurfaceHeightMaps || m.texture.z == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormap_record(m.texture.z), z + m.params.z);
 }
 vec3 microsurface_slope_colour(GpuMaterial m, vec2 s) {
-  return m.texture.w == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormap_record(m.texture.w), length(s));
+  return !kMicrosurfaceSlopeMaps || m.texture.w == FACET_NO_COLORMAP ? vec3(1.0)
+                                                                    : colormap_at(colormap_record(m.texture.w), length(s));
 }
 
 struct MicrosurfaceMoments {
@@ -63,7 +65,7 @@ vec3 microsurface_facet_radiance(GpuMaterial m, vec3 albedo, MicrosurfaceStatist
                                  float visibility) {
   float cos_l = max(dot(microsurface_normal(stats.s_mean), l), 0.0);
   vec3 diffuse = albedo * FACET_INV_PI * (globals.light_irradiance.rgb * (cos_l * visibility) + globals.ambient.rgb);
-  if (m.kind.y == 0u) return diffuse;
+  if (!kMicrosurfaceLobes || m.kind.y == 0u) return diffuse;
   return diffuse + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_specular(stats, m.params.xy, l, v) * visibility);
 }
 
@@ -74,7 +76,7 @@ vec3 microsurface_traced_radiance(GpuMaterial m, GpuPlane plane, vec2 q, vec3 n,
   vec3 point = heightfield_point(heightfield_quads(m), q, m.albedo.w);
   vec3 albedo = microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz);
   vec3 c = lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
-  if (m.kind.y == 0u || visibility == 0.0) return c;
+  if (!kMicrosurfaceLobes || m.kind.y == 0u || visibility == 0.0) return c;
   return c + globals.light_irradiance.rgb * m.albedo.rgb *
                  (beckmann_facet_specular(n, plane.tangent.xyz, v, l, m.params.xy) * visibility);
 }
@@ -98,7 +100,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
   MicrosurfaceVisibility vis = microsurface_visibility(stats, v, l);
   vec3 slope_sum = vec3(0.0), slope_cos_sum = vec3(0.0);
   // Without a slope colour map only the smooth cosine is integrated: the 3 x 3 rule suffices there.
-  int slope_nodes = m.texture.w == FACET_NO_COLORMAP ? MS_SLOPE_NODES_COSINE : MS_SLOPE_NODES;
+  int slope_nodes = !kMicrosurfaceSlopeMaps || m.texture.w == FACET_NO_COLORMAP ? MS_SLOPE_NODES_COSINE : MS_SLOPE_NODES;
   for (int i = 0; i < slope_nodes; ++i)
     for (int j = 0; j < slope_nodes; ++j) {
       MicrosurfaceSlopeNode node = microsurface_slope_node(vis.ds, slope_nodes, i, j);
@@ -107,7 +109,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
       slope_cos_sum += a * max(dot(microsurface_normal(node.s), l), 0.0);
     }
   vec3 heights = vec3(1.0), heights_lit = vec3(vis.lit);
-  if (m.texture.z != FACET_NO_COLORMAP) {
+  if (kMicrosurfaceHeightMaps && m.texture.z != FACET_NO_COLORMAP) {
     heights = vec3(0.0);
     heights_lit = vec3(0.0);
     float a = microsurface_lit_exponent(vis);
@@ -130,7 +132,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
   }
   vec3 radiance = FACET_INV_PI * (globals.light_irradiance.rgb * visibility * heights_lit * slope_cos_sum +
                                   globals.ambient.rgb * heights * slope_sum);
-  if (m.kind.y == 0u) return radiance;
+  if (!kMicrosurfaceLobes || m.kind.y == 0u) return radiance;
   return radiance + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_mean_facet_specular(stats, m.params.xy, l, v) * visibility);
 }
 
