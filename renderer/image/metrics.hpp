@@ -34,7 +34,7 @@ ScalarImage relative_error_map(const Image& test, const Image& reference, double
 
 // absolute_error_map at the resolution the two images were stored with: each sample's |a - b| less the
 // most rounding a and b can carry (rounding_bound), not below 0. The true error an error estimate is
-// judged against: a half-float reference rounds an exactly shaded pixel by up to 3e-4 of its value,
+// judged against: a half-float reference rounds an exactly shaded pixel by up to 2^-11 of its value,
 // which would otherwise rank it among the erring ones.
 ScalarImage resolved_error_map(const Image& test, const Image& reference, const StoredPrecision& test_precision,
                                const StoredPrecision& reference_precision);
