@@ -57,10 +57,11 @@ const Scene& runnable(const Scene& scene, const RenderMethod& method) {
 // Whether the pass accumulates the auxiliary values: asked for, or filtered:adaptive's error estimate.
 bool writes_aovs(const RenderMethod& method) { return method.aovs.any() || method.adaptive_samples_per_axis > 0; }
 
-// Whether some dispatch computes the texture's error estimate: the error channel, or filtered:adaptive's
-// ranking (DirectPass::skips_estimate decides per dispatch). Without, its code is left out of the pipeline:
-// lavapipe would run it masked on every tap, the skipped dispatches too.
-bool estimates_error(const RenderMethod& method) { return method.aovs.error || method.adaptive_samples_per_axis > 0; }
+// Whether a dispatch computes the texture's error estimate: for the frame's error channel, and in
+// filtered:adaptive's first pass, which ranks by it (a refinement's goes only to the channel, if any).
+bool computes_estimate(bool error_channel, bool adaptive, bool refining) {
+  return error_channel || (adaptive && !refining);
+}
 
 // Whether a colour-mapped texture of the scene has a map of this interpolation.
 bool uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
@@ -115,7 +116,10 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Linear) ? 1u : 0u},
       {FACET_RENDER_SPEC_HAS_STEP_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Steps) ? 1u : 0u},
       {FACET_RENDER_SPEC_WHOLE_MIP_TEXELS, mip_texels_are_whole(scene) ? 1u : 0u},
-      {FACET_RENDER_SPEC_ESTIMATES_ERROR, estimates_error(method) ? 1u : 0u},
+      // Some dispatch computes the estimate (a first pass, if any does); without, its code is left out of the
+      // pipeline, for lavapipe would run it masked on every tap.
+      {FACET_RENDER_SPEC_ESTIMATES_ERROR,
+       computes_estimate(method.aovs.error, method.adaptive_samples_per_axis > 0, false) ? 1u : 0u},
       {FACET_RENDER_SPEC_MICROSURFACE_HEIGHT_MAPS,
        some_microsurface_has(scene, &MicrosurfaceMaterial::height_colormap) ? 1u : 0u},
       {FACET_RENDER_SPEC_MICROSURFACE_SLOPE_MAPS,
@@ -231,8 +235,7 @@ double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, st
 }
 
 uint32_t DirectPass::skips_estimate(bool refining) const {
-  const bool ranks = !refining && adaptive_samples_per_axis_ > 0;  // the refined pixels' is only written out
-  return aovs_.error || ranks ? 0u : 1u;  // 1 always without estimates_error: the pipeline has no estimate then
+  return computes_estimate(aovs_.error, adaptive_samples_per_axis_ > 0, refining) ? 0u : 1u;
 }
 
 void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,

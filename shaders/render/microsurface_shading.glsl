@@ -18,14 +18,17 @@
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
 
-// height_colormap(z) slope_colormap(|s|), each factor only when the material has it (and the scene's
-// pipeline the code: kMicrosurfaceHeightMaps, kMicrosurfaceSlopeMaps, declared by the including shader).
+// Whether microsurface m has a height or a slope colour map, and the scene's pipeline its code
+// (kMicrosurfaceHeightMaps, kMicrosurfaceSlopeMaps, declared by the including shader).
+bool microsurface_has_height_map(GpuMaterial m) { return kMicrosurfaceHeightMaps && m.texture.z != FACET_NO_COLORMAP; }
+bool microsurface_has_slope_map(GpuMaterial m) { return kMicrosurfaceSlopeMaps && m.texture.w != FACET_NO_COLORMAP; }
+
+// height_colormap(z) slope_colormap(|s|), each factor only when the material has it.
 vec3 microsurface_height_colour(GpuMaterial m, float z) {
-  return !kMicrosurfaceHeightMaps || m.texture.z == FACET_NO_COLORMAP ? vec3(1.0) : colormap_at(colormap_record(m.texture.z), z + m.params.z);
+  return microsurface_has_height_map(m) ? colormap_at(colormap_record(m.texture.z), z + m.params.z) : vec3(1.0);
 }
 vec3 microsurface_slope_colour(GpuMaterial m, vec2 s) {
-  return !kMicrosurfaceSlopeMaps || m.texture.w == FACET_NO_COLORMAP ? vec3(1.0)
-                                                                    : colormap_at(colormap_record(m.texture.w), length(s));
+  return microsurface_has_slope_map(m) ? colormap_at(colormap_record(m.texture.w), length(s)) : vec3(1.0);
 }
 
 struct MicrosurfaceMoments {
@@ -100,7 +103,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
   MicrosurfaceVisibility vis = microsurface_visibility(stats, v, l);
   vec3 slope_sum = vec3(0.0), slope_cos_sum = vec3(0.0);
   // Without a slope colour map only the smooth cosine is integrated: the 3 x 3 rule suffices there.
-  int slope_nodes = !kMicrosurfaceSlopeMaps || m.texture.w == FACET_NO_COLORMAP ? MS_SLOPE_NODES_COSINE : MS_SLOPE_NODES;
+  int slope_nodes = microsurface_has_slope_map(m) ? MS_SLOPE_NODES : MS_SLOPE_NODES_COSINE;
   for (int i = 0; i < slope_nodes; ++i)
     for (int j = 0; j < slope_nodes; ++j) {
       MicrosurfaceSlopeNode node = microsurface_slope_node(vis.ds, slope_nodes, i, j);
@@ -109,7 +112,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
       slope_cos_sum += a * max(dot(microsurface_normal(node.s), l), 0.0);
     }
   vec3 heights = vec3(1.0), heights_lit = vec3(vis.lit);
-  if (kMicrosurfaceHeightMaps && m.texture.z != FACET_NO_COLORMAP) {
+  if (microsurface_has_height_map(m)) {
     heights = vec3(0.0);
     heights_lit = vec3(0.0);
     float a = microsurface_lit_exponent(vis);
