@@ -124,12 +124,14 @@ void add_render_command(CLI::App& app, Action& action) {
       ->add_option("--method", options->method,
                    "How sub-pixel detail becomes a pixel: naive, mip, colormip, ss:K (K x K rays), filtered, "
                    "filtered:table; M:ss:K runs footprint method M per stratum of ss:K (filtered:ss:2); "
-                   "filtered:adaptive[:K] adds K x K strata (K = 4) where filtered's estimated error is largest")
+                   "filtered:adaptive[:K] adds up to K x K strata (K = 8) where filtered's estimated error is largest, "
+                   "as many as its kind of error needs")
       ->capture_default_str();
   command
       ->add_option("--adaptive-error", options->adaptive.error,
                    "filtered:adaptive refines every pixel whose estimated error (the error AOV) exceeds this "
-                   "(default: the 2/K^2 of the pixels with the largest estimate)")
+                   "(default: the refinements that remove the most estimated error, within the work of two more strata "
+                   "per pixel)")
       ->check(CLI::PositiveNumber);
   command
       ->add_option("--adaptive-time", options->adaptive.time_ms,

@@ -1,5 +1,7 @@
-// Which pixels `filtered:adaptive` renders again with K x K strata (docs/error_estimate.md, "Adaptive
-// refinement"): the first pass's per-pixel error estimate ranks them, the budget cuts the ranking.
+// Which pixels `filtered:adaptive` renders again, and with how many strata each (docs/error_estimate.md,
+// "Adaptive refinement"): the first pass's per-pixel error estimate, split into its texture and edge terms,
+// predicts what each number of strata leaves (eq. 7); the budget buys the refinements that remove the most
+// predicted squared error per unit of work.
 #pragma once
 
 #include <cstddef>
@@ -11,13 +13,48 @@
 
 namespace facet::gpu {
 
-// The pixels whose estimate exceeds budget.error (0 without one: a pixel estimated exact is never
-// refined), most estimated error first, ties by index; without an error or a time budget, only the
-// first ceil(2 n / K^2) of them (two more rays per pixel on average). A NaN estimate is not refined.
-std::vector<std::uint32_t> ranked_pixels_to_refine(std::span<const float> estimates, const AdaptiveBudget& budget,
-                                                   int samples_per_axis);
+// What the first pass says of a pixel: its whole estimate, the edge term in it (eq. 3), and whether a
+// colour-mapped texture's footprints made the rest (the texture term; else the rest is eq. 3's contrast
+// term, which strata resolve as they resolve edges).
+struct PixelEstimate {
+  float estimate;
+  float edge;
+  bool textured;
+};
 
-// How many more pixels fit in `remaining_ms` of device time at `ms_per_pixel` each, at most `limit`.
-std::size_t pixels_within_time(double remaining_ms, double ms_per_pixel, std::size_t limit);
+// A pixel of the second pass and its strata per axis.
+struct RefinedPixel {
+  std::uint32_t index;
+  int samples_per_axis;
+  bool textured;
+  bool operator==(const RefinedPixel&) const = default;
+};
+
+// The strata per axis a pixel may get under filtered:adaptive:K: the powers of two from 2 below K, and K.
+std::vector<int> refinement_levels(int max_samples_per_axis);
+
+// The work of a pixel of K x K strata (K = 1: the first pass), in units of a ray or a row of taps: K^2 rays,
+// and on a textured pixel K^2 s^2 rows of taps, s the sub-footprints per axis of each stratum
+// (render/texture_sampling.glsl: kFilteredSplit = 2 in the first pass, max(1, ceil(4 / K)) when refined).
+double refinement_cost(int samples_per_axis, bool textured);
+
+// Eq. 7: the squared error left in a pixel of K x K strata.
+double predicted_squared_error(const PixelEstimate& pixel, int samples_per_axis);
+
+// The pixels to refine and their K, most estimated error first (ties by index); a pixel estimated 0 or
+// NaN is never refined.
+// - budget.error E: every pixel whose estimate exceeds E, at the fewest strata that eq. 7 puts at or below
+//   E (else the most);
+// - otherwise `work` (refinement_cost units; default_refinement_work without a budget) buys, greedily, the
+//   refinements with the most predicted squared error removed per unit.
+std::vector<RefinedPixel> plan_refinement(std::span<const PixelEstimate> pixels, const AdaptiveBudget& budget,
+                                          int max_samples_per_axis, double work);
+
+// The default budget: two refined strata of a ray and a row of taps per pixel, 4 n units (what the first
+// ceil(2 n / 16) textured pixels cost at K = 4).
+double default_refinement_work(std::size_t pixels);
+
+// How many of the plan's leading pixels fit in `work` (refinement_cost units).
+std::size_t pixels_within_work(std::span<const RefinedPixel> plan, double work);
 
 }  // namespace facet::gpu

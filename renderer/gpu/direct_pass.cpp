@@ -223,11 +223,10 @@ double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, in
   return kernel_->dispatch(bindings, &tile, groups);
 }
 
-double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum) {
+double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum, int k) {
   constexpr uint32_t kGroup = FACET_RENDER_WORKGROUP * FACET_RENDER_WORKGROUP;
   const uint32_t blocks = static_cast<uint32_t>((count + kGroup - 1) / kGroup);
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
-  const int k = adaptive_samples_per_axis_;
   const auto n = static_cast<uint32_t>(count);
   const GpuTile tile{uvec4(0, 0, n, 1), uvec4(stratum % k, stratum / k, stratum, k), spread,
                      uvec4(n, skips_estimate(true), 0, 0)};
@@ -240,40 +239,54 @@ uint32_t DirectPass::skips_estimate(bool refining) const {
 
 void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
                         std::span<const float> edge, RenderStats& stats) {
-  std::vector<float> estimates(aovs.size());
-  for (size_t i = 0; i < aovs.size(); ++i) estimates[i] = aovs[i].error;
-  const int k = adaptive_samples_per_axis_;
-  const std::vector<uint32_t> ranked = ranked_pixels_to_refine(estimates, adaptive_budget_, k);
-  // Until measured, a refined pixel is taken to cost K^2 first-pass pixels.
-  double ms_per_pixel = stats.gpu_ms / static_cast<double>(aovs.size()) * k * k, refine_ms = 0.0;
+  std::vector<PixelEstimate> estimates(aovs.size());
+  double first_work = 0.0;
+  for (size_t i = 0; i < aovs.size(); ++i) {
+    estimates[i] = {aovs[i].error, edge[i], aovs[i].texture_term};
+    first_work += refinement_cost(1, aovs[i].texture_term);
+  }
+  // Until measured, a unit of refinement work costs what it costs in the first pass.
+  double ms_per_work = stats.gpu_ms / first_work, refine_ms = 0.0, work_done = 0.0;
+  const std::optional<double> time_ms = adaptive_budget_.time_ms;
+  const std::vector<RefinedPixel> plan =
+      plan_refinement(estimates, adaptive_budget_, adaptive_samples_per_axis_,
+                      time_ms ? (*time_ms - stats.gpu_ms) / ms_per_work : default_refinement_work(aovs.size()));
   const size_t chunk_limit = static_cast<size_t>(tile_size_) * tile_size_;
   std::vector<vec4> sums(3 * chunk_limit);
   size_t done = 0;
-  while (done < ranked.size()) {
-    size_t count = std::min(ranked.size() - done, chunk_limit);
-    if (adaptive_budget_.time_ms)
-      count = pixels_within_time(*adaptive_budget_.time_ms - stats.gpu_ms - refine_ms, ms_per_pixel, count);
+  while (done < plan.size()) {
+    const std::span<const RefinedPixel> next(plan.begin() + done, std::min(plan.size() - done, chunk_limit));
+    const size_t count =
+        time_ms ? pixels_within_work(next, (*time_ms - stats.gpu_ms - refine_ms) / ms_per_work) : next.size();
     if (count == 0) break;
-    // In frame order, so that neighbouring lanes trace neighbouring pixels.
-    std::vector<uint32_t> chunk(ranked.begin() + done, ranked.begin() + done + count);
-    std::ranges::sort(chunk);
-    std::vector<glm::uvec2> positions(count);
-    for (size_t j = 0; j < count; ++j)
-      positions[j] =
-          glm::uvec2(chunk[j] % static_cast<uint32_t>(image.width), chunk[j] / static_cast<uint32_t>(image.width));
-    pixel_list_.upload(positions.data(), sizeof(glm::uvec2) * count);
-    for (int s = 0; s < k * k; ++s) refine_ms += dispatch_list(bindings, count, s);
-    pixels_.download(sums.data(), sizeof(vec4) * 3 * count);
-    for (size_t j = 0; j < count; ++j) {
-      const uint32_t at = chunk[j];
-      const vec4 pixel = sums[j];
-      image.set(at, counts_work_ ? image.at(at) + glm::vec3(pixel) : glm::vec3(pixel));  // work: both passes'
-      image.alpha[at] = pixel.a;
-      aovs[at] = aov_pixel(sums[count + j], sums[2 * count + j], std::round(pixel.a * float(k * k)), k);
-      aovs[at].error += edge[at] / static_cast<float>(k);  // the first pass's edge term over K (eq. 3)
+    for (int k : refinement_levels(adaptive_samples_per_axis_)) {
+      // In frame order, so that neighbouring lanes trace neighbouring pixels.
+      std::vector<uint32_t> group;
+      for (const RefinedPixel& p : next.first(count))
+        if (p.samples_per_axis == k) {
+          group.push_back(p.index);
+          work_done += refinement_cost(k, p.textured);
+        }
+      if (group.empty()) continue;
+      std::ranges::sort(group);
+      std::vector<glm::uvec2> positions(group.size());
+      for (size_t j = 0; j < group.size(); ++j)
+        positions[j] =
+            glm::uvec2(group[j] % static_cast<uint32_t>(image.width), group[j] / static_cast<uint32_t>(image.width));
+      pixel_list_.upload(positions.data(), sizeof(glm::uvec2) * group.size());
+      for (int s = 0; s < k * k; ++s) refine_ms += dispatch_list(bindings, group.size(), s, k);
+      pixels_.download(sums.data(), sizeof(vec4) * 3 * group.size());
+      for (size_t j = 0; j < group.size(); ++j) {
+        const uint32_t at = group[j];
+        const vec4 pixel = sums[j];
+        image.set(at, counts_work_ ? image.at(at) + glm::vec3(pixel) : glm::vec3(pixel));  // work: both passes'
+        image.alpha[at] = pixel.a;
+        aovs[at] = aov_pixel(sums[group.size() + j], sums[2 * group.size() + j], std::round(pixel.a * float(k * k)), k);
+        aovs[at].error += edge[at] / static_cast<float>(k);  // the first pass's edge term over K (eq. 3)
+      }
     }
     done += count;
-    ms_per_pixel = refine_ms / static_cast<double>(done);
+    ms_per_work = refine_ms / work_done;
   }
   stats.gpu_ms += refine_ms;
   stats.refined_pixels = done;

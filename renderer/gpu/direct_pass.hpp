@@ -61,14 +61,13 @@ class DirectPass {
   std::vector<const vk::Buffer*> bindings() const;  // scene buffers, pixels, diffraction buffers
   // Renders stratum `stratum` of ss:K into pixels_ for the tile's w x h pixels at (x0, y0); its device ms.
   double dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h, int stratum);
-  // Renders stratum `stratum` of K x K (K = adaptive_samples_per_axis_) into pixels_ for the first
-  // `count` pixels of pixel_list_; its device ms.
-  double dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum);
+  // Renders stratum `stratum` of K x K into pixels_ for the first `count` pixels of pixel_list_; its device ms.
+  double dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum, int k);
   // GpuTile::list.y of a dispatch: 1 leaves the texture's error estimate out (another colour-map integral
   // per tap). Only the error channel needs it, and filtered:adaptive's first pass, which ranks by it.
   uint32_t skips_estimate(bool refining) const;
-  // filtered:adaptive: renders the pixels with the largest estimated error (aovs[i].error, with the
-  // first pass's edge term `edge`) again with K x K strata, within the budget, into `image` and `aovs`;
+  // filtered:adaptive: renders the pixels the budget buys (gpu/adaptive_refinement.hpp: from aovs[i].error
+  // and the first pass's edge term `edge`) again, each with its K x K strata, into `image` and `aovs`;
   // `stats` holds the first pass's time.
   void refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
               std::span<const float> edge, RenderStats& stats);
@@ -77,7 +76,7 @@ class DirectPass {
   int tile_size_;
   int samples_per_axis_;  // ss:K: K^2 dispatches per tile
   AovSet aovs_;           // the auxiliary channels each frame carries
-  int adaptive_samples_per_axis_;  // filtered:adaptive's K (0: not adaptive)
+  int adaptive_samples_per_axis_;  // filtered:adaptive's largest K (0: not adaptive)
   AdaptiveBudget adaptive_budget_;
   bool writes_aovs_;      // the pass accumulates the auxiliary values (asked for, or filtered:adaptive's estimate)
   bool counts_work_;      // the pixels hold their samples' summed work, not colours (gpu/work_per_pixel.hpp)

@@ -10,7 +10,7 @@ namespace facet::gpu {
 
 namespace {
 constexpr int kMaxSamplesPerAxis = 16;
-constexpr int kDefaultAdaptiveSamplesPerAxis = 4;
+constexpr int kDefaultAdaptiveSamplesPerAxis = 8;
 constexpr std::string_view kAdaptive = "filtered:adaptive";
 
 // K of "ss:K" in `count` (the text after "ss:"), or 0 if it is not an integer in [1, kMaxSamplesPerAxis].

@@ -7,8 +7,8 @@
 //   filtered:table   the same Gaussian looked up in the colour map's prefiltered table T(mu, sigma)
 //   M:ss:K     footprint method M (mip, colormip, filtered, filtered:table) per stratum of ss:K, each
 //              ray with its stratum's footprint: the strata resolve geometric edges, M the detail within
-//   filtered:adaptive[:K]   filtered, then filtered:ss:K (K = 4 unless given) again on the pixels whose
-//              estimated error (docs/error_estimate.md) is largest, within a budget (AdaptiveBudget)
+//   filtered:adaptive[:K]   filtered, then up to K x K strata of filtered (K = 8 unless given), as many as
+//              each pixel's estimated error (docs/error_estimate.md) asks, within a budget (AdaptiveBudget)
 //   diffraction:M    `naive`, with every diffraction material rendered by method M (spectral,
 //                    preintegrated, orders; scene/grating/diffraction_method.hpp)
 #pragma once
@@ -21,9 +21,9 @@
 
 namespace facet::gpu {
 
-// How many pixels filtered:adaptive refines, most estimated error first: those whose estimate exceeds
-// `error`, until the frame's device time reaches `time_ms`; with neither, the top 2 / K^2 of the
-// pixels (two more rays per pixel on average). Only the time budget makes frames depend on the host.
+// What filtered:adaptive refines (gpu/adaptive_refinement.hpp): every pixel whose estimate exceeds `error`;
+// the refinements that fit the frame's device time `time_ms`; with neither, those that fit the work of two
+// more strata per pixel. Only the time budget makes frames depend on the host.
 struct AdaptiveBudget {
   std::optional<double> error;
   std::optional<double> time_ms;

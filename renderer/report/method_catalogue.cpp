@@ -56,7 +56,7 @@ const std::vector<CatalogueEntry>& method_catalogue() {
       // occlusions), filtered the detail within each stratum's footprint.
       {"filtered:ss:2", has_subpixel_detail, true, "filtered:ss:2"},
       {"filtered:ss:4", has_subpixel_detail, false, "filtered:ss:4"},
-      // filtered:ss:4 only where filtered's estimated error is largest (two more rays per pixel on average).
+      // filtered strata only where filtered's estimated error is largest (two more strata per pixel's work).
       {"filtered:adaptive", has_subpixel_detail, true, "filtered:adaptive"},
       // Diffraction (issue 11): the three methods at the material's own settings, then the spectral
       // integral with fewer or more wavelength samples than the material's tolerance picks, and

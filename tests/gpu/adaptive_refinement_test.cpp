@@ -59,34 +59,89 @@ float max_abs_difference(const Image& a, const Image& b, std::size_t pixel) {
   return std::max({d.x, d.y, d.z, std::abs(a.alpha[pixel] - b.alpha[pixel])});
 }
 
-// filtered:adaptive[:K]: K = 4 unless given, in [2, 16]; the name survives a round trip.
+// filtered:adaptive[:K]: K = 8 unless given, in [2, 16]; the name survives a round trip.
 TEST(AdaptiveRefinement, MethodNamesItsStrata) {
-  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive").adaptive_samples_per_axis, 4);
+  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive").adaptive_samples_per_axis, 8);
   EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive").texture, gpu::RenderMethod::Texture::Filtered);
-  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive:8").adaptive_samples_per_axis, 8);
-  for (const char* text : {"filtered:adaptive", "filtered:adaptive:2", "filtered:adaptive:16"})
+  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive:4").adaptive_samples_per_axis, 4);
+  for (const char* text : {"filtered:adaptive", "filtered:adaptive:2", "filtered:adaptive:4", "filtered:adaptive:16"})
     EXPECT_EQ(gpu::RenderMethod::parse(text).name(), text);
-  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive:4").name(), "filtered:adaptive");
+  EXPECT_EQ(gpu::RenderMethod::parse("filtered:adaptive:8").name(), "filtered:adaptive");
   for (const char* text : {"filtered:adaptive:1", "filtered:adaptive:17", "filtered:adaptive:", "filtered:adaptive4",
                            "filtered:adaptive:ss:2"})
     EXPECT_THROW(gpu::RenderMethod::parse(text), Error) << text;
 }
 
-TEST(AdaptiveRefinement, RanksByEstimateAndCutsAtTheBudget) {
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  const std::vector<float> estimates = {0.1f, 0.5f, 0.0f, nan, 0.5f, 0.2f, 0.0f, 0.05f};
-  // Error budget: every estimate above it, largest first, ties by index; NaN and zero never.
-  EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, error_budget(0.15), 4), (std::vector<std::uint32_t>{1, 4, 5}));
-  // Time budget alone: every positive estimate, in rank order (the time cuts the list while rendering).
-  EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, time_budget(5.0), 4), (std::vector<std::uint32_t>{1, 4, 5, 0, 7}));
-  // No budget: ceil(2 n / K^2) pixels, n = 8: 1 at K = 4, 4 at K = 2.
-  EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, {}, 4), (std::vector<std::uint32_t>{1}));
-  EXPECT_EQ(gpu::ranked_pixels_to_refine(estimates, {}, 2), (std::vector<std::uint32_t>{1, 4, 5, 0}));
+// The levels, the work and eq. 7 of docs/error_estimate.md, by hand: on a textured pixel a stratum of K >= 4
+// lays one row of taps (s = 1), of K = 2 and K = 3 a 2 x 2 split (s = ceil(4 / K) = 2), the first pass 2 x 2
+// (K = 1); an untextured pixel costs its rays.
+TEST(AdaptiveRefinement, LevelsWorkAndPredictedError) {
+  EXPECT_EQ(gpu::refinement_levels(2), (std::vector<int>{2}));
+  EXPECT_EQ(gpu::refinement_levels(3), (std::vector<int>{2, 3}));
+  EXPECT_EQ(gpu::refinement_levels(8), (std::vector<int>{2, 4, 8}));
+  EXPECT_EQ(gpu::refinement_levels(12), (std::vector<int>{2, 4, 8, 12}));
+  EXPECT_EQ(gpu::refinement_cost(1, true), 5.0);    // 1 (1 + 2^2)
+  EXPECT_EQ(gpu::refinement_cost(2, true), 20.0);   // 4 (1 + 2^2)
+  EXPECT_EQ(gpu::refinement_cost(3, true), 45.0);   // 9 (1 + 2^2)
+  EXPECT_EQ(gpu::refinement_cost(4, true), 32.0);   // 16 (1 + 1)
+  EXPECT_EQ(gpu::refinement_cost(8, true), 128.0);  // 64 (1 + 1)
+  EXPECT_EQ(gpu::refinement_cost(1, false), 1.0);
+  EXPECT_EQ(gpu::refinement_cost(8, false), 64.0);
+  // A textured pixel's texture error falls with the taps per axis (2 in the first pass, 4 at K = 2 and 4, 8
+  // at K = 8); edge error over K; an untextured pixel's whole estimate over K.
+  const gpu::PixelEstimate texture{0.4f, 0.0f, true}, edge{0.4f, 0.4f, true}, both{0.7f, 0.4f, true},
+      contrast{0.5f, 0.4f, false};
+  EXPECT_NEAR(gpu::predicted_squared_error(texture, 1), 0.16, 1e-7);
+  EXPECT_NEAR(gpu::predicted_squared_error(texture, 2), 0.04, 1e-7);
+  EXPECT_NEAR(gpu::predicted_squared_error(texture, 4), 0.04, 1e-7);
+  EXPECT_NEAR(gpu::predicted_squared_error(texture, 8), 0.01, 1e-7);
+  EXPECT_NEAR(gpu::predicted_squared_error(edge, 4), 0.01, 1e-7);
+  EXPECT_NEAR(gpu::predicted_squared_error(both, 2), 0.0225 + 0.04, 1e-7);
+  EXPECT_NEAR(gpu::predicted_squared_error(contrast, 2), (0.01 + 0.16) / 4, 1e-7);
+}
 
-  EXPECT_EQ(gpu::pixels_within_time(10.0, 0.5, 100), 20u);
-  EXPECT_EQ(gpu::pixels_within_time(10.0, 0.5, 7), 7u);
-  EXPECT_EQ(gpu::pixels_within_time(-1.0, 0.5, 7), 0u);
-  EXPECT_EQ(gpu::pixels_within_time(10.0, 0.0, 7), 7u);  // nothing measured yet costs nothing
+TEST(AdaptiveRefinement, PlansByEstimateWithinTheBudget) {
+  using gpu::PixelEstimate;
+  using gpu::RefinedPixel;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<PixelEstimate> pixels = {{0.1f, 0.0f, true}, {0.5f, 0.5f, true}, {0.0f, 0.0f, true},
+                                             {nan, nan, true},   {0.5f, 0.0f, true}, {0.2f, 0.0f, true},
+                                             {0.0f, 0.0f, true}, {0.05f, 0.0f, true}};
+  // Error budget E = 0.15: every estimate above it (NaN and zero never), largest first, ties by index, each
+  // at the fewest strata eq. 7 puts at or below E: the edge 0.5 needs 0.25 / K^2 <= 0.0225, K = 4; the
+  // texture 0.5 gets 0.0625 at K = 2 and 4, 0.0156 at 8; the texture 0.2 gets 0.01 at K = 2. With K at most
+  // 4, the texture 0.5 stops there.
+  EXPECT_EQ(gpu::plan_refinement(pixels, error_budget(0.15), 8, 0.0),
+            (std::vector<RefinedPixel>{{1, 4, true}, {4, 8, true}, {5, 2, true}}));
+  EXPECT_EQ(gpu::plan_refinement(pixels, error_budget(0.15), 4, 0.0),
+            (std::vector<RefinedPixel>{{1, 4, true}, {4, 4, true}, {5, 2, true}}));
+  // Work: the largest predicted squared error removed per unit first. Edge pixels of 0.4 and 0.2:
+  // 0.4 from 1 to 2 removes 0.12 for 20 (0.006 a unit), then from 2 to 4 0.03 for 12 (0.0025), more than 0.2
+  // from 1 to 2 (0.03 for 20: 0.0015); 0.4 from 4 to 8 (0.0075 for 96) comes last.
+  const std::vector<PixelEstimate> edges = {{0.4f, 0.4f, true}, {0.2f, 0.2f, true}};
+  EXPECT_EQ(gpu::plan_refinement(edges, {}, 8, 19.0), (std::vector<RefinedPixel>{}));
+  EXPECT_EQ(gpu::plan_refinement(edges, {}, 8, 20.0), (std::vector<RefinedPixel>{{0, 2, true}}));
+  EXPECT_EQ(gpu::plan_refinement(edges, {}, 8, 51.0), (std::vector<RefinedPixel>{{0, 4, true}}));
+  EXPECT_EQ(gpu::plan_refinement(edges, {}, 8, 52.0), (std::vector<RefinedPixel>{{0, 4, true}, {1, 2, true}}));
+  EXPECT_EQ(gpu::plan_refinement(edges, {}, 8, 1e9), (std::vector<RefinedPixel>{{0, 8, true}, {1, 8, true}}));
+  EXPECT_EQ(gpu::plan_refinement(edges, {}, 2, 1e9), (std::vector<RefinedPixel>{{0, 2, true}, {1, 2, true}}));
+  // A textured pixel takes K = 2 (the taps of K = 4 for less work). An untextured one of the same estimate
+  // pays rays only: 1 to 2 removes 0.12 for 4, to 4 0.15 for 16, to 8 0.1575 for 64; then 2 to 4 removes
+  // 0.03 for 12 (0.0025 a unit), more than 4 to 8's 0.0075 for 48: 4 + 12 + 48 = 64 units reach K = 8.
+  const std::vector<PixelEstimate> texture = {{0.4f, 0.0f, true}}, contrast = {{0.4f, 0.0f, false}};
+  EXPECT_EQ(gpu::plan_refinement(texture, {}, 8, 100.0), (std::vector<RefinedPixel>{{0, 2, true}}));
+  EXPECT_EQ(gpu::plan_refinement(texture, {}, 8, 1e9), (std::vector<RefinedPixel>{{0, 8, true}}));
+  EXPECT_EQ(gpu::plan_refinement(contrast, {}, 8, 15.0), (std::vector<RefinedPixel>{{0, 2, false}}));
+  EXPECT_EQ(gpu::plan_refinement(contrast, {}, 8, 63.0), (std::vector<RefinedPixel>{{0, 4, false}}));
+  EXPECT_EQ(gpu::plan_refinement(contrast, {}, 8, 64.0), (std::vector<RefinedPixel>{{0, 8, false}}));
+  EXPECT_EQ(gpu::default_refinement_work(8), 32.0);
+
+  const std::vector<RefinedPixel> plan = {{3, 2, true}, {1, 4, true}, {0, 8, false}};  // 20, 32, 64 units
+  EXPECT_EQ(gpu::pixels_within_work(plan, 19.0), 0u);
+  EXPECT_EQ(gpu::pixels_within_work(plan, 51.0), 1u);
+  EXPECT_EQ(gpu::pixels_within_work(plan, 52.0), 2u);
+  EXPECT_EQ(gpu::pixels_within_work(plan, 116.0), 3u);
+  EXPECT_EQ(gpu::pixels_within_work(plan, -1.0), 0u);
 }
 
 // With an error budget E the pixels whose first-pass estimate exceeds E are filtered:ss:2's pixels and all
