@@ -198,9 +198,14 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       buffers_(
           timed(timings, "upload",
                 [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),
-      pixels_(context, sizeof(vec4) * pixel_vec4s(writes_aovs_) * static_cast<uint64_t>(tile_size) * tile_size),
-      pixel_list_(
-          vk::Buffer::of<glm::uvec2>(context, method.adaptive_samples_per_axis > 0 ? tile_size_ * tile_size_ : 1)),
+      // filtered:adaptive: a tile's worth of strata a dispatch, and at least one pixel's.
+      list_capacity_(
+          method.adaptive_samples_per_axis > 0
+              ? std::max(tile_size_ * tile_size_, method.adaptive_samples_per_axis * method.adaptive_samples_per_axis)
+              : 1),
+      pixels_(context, sizeof(vec4) * pixel_vec4s(writes_aovs_) *
+                           static_cast<uint64_t>(std::max(tile_size_ * tile_size_, list_capacity_))),
+      pixel_list_(vk::Buffer::of<glm::uvec2>(context, static_cast<size_t>(list_capacity_))),
       // The part of the pipeline's creation the upload did not hide.
       kernel_(timed(timings, "pipeline", [&] { return compiling_.get(); })) {
   // lavapipe JIT-compiles a pipeline on its first dispatch: one pixel here keeps that out of every
@@ -223,18 +228,55 @@ double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, in
   return kernel_->dispatch(bindings, &tile, groups);
 }
 
-double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum, int k) {
+double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int k) {
   constexpr uint32_t kGroup = FACET_RENDER_WORKGROUP * FACET_RENDER_WORKGROUP;
   const uint32_t blocks = static_cast<uint32_t>((count + kGroup - 1) / kGroup);
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const auto n = static_cast<uint32_t>(count);
-  const GpuTile tile{uvec4(0, 0, n, 1), uvec4(stratum % k, stratum / k, stratum, k), spread,
-                     uvec4(n, skips_estimate(true), 0, 0)};
+  const GpuTile tile{uvec4(0, 0, n, 1), uvec4(0, 0, 0, k), spread, uvec4(n, skips_estimate(true), 0, 0)};
   return kernel_->dispatch(bindings, &tile, glm::uvec3(blocks, 1, 1));
 }
 
 uint32_t DirectPass::skips_estimate(bool refining) const {
   return computes_estimate(aovs_.error, adaptive_samples_per_axis_ > 0, refining) ? 0u : 1u;
+}
+
+double DirectPass::refine_group(std::span<const vk::Buffer* const> bindings, std::span<const uint32_t> pixels, int k,
+                                Image& image, std::vector<AovPixel>& aovs, std::span<const float> edge) {
+  const size_t strata = static_cast<size_t>(k) * k, per_dispatch = static_cast<size_t>(list_capacity_) / strata;
+  std::vector<glm::uvec2> entries;
+  std::vector<vec4> samples;
+  double ms = 0.0;
+  for (size_t begin = 0; begin < pixels.size(); begin += per_dispatch) {
+    const std::span<const uint32_t> chunk = pixels.subspan(begin, std::min(per_dispatch, pixels.size() - begin));
+    const size_t n = chunk.size() * strata;
+    entries.resize(n);
+    for (size_t j = 0; j < chunk.size(); ++j)
+      for (size_t s = 0; s < strata; ++s)  // (x | stratum << 16, y): widths are at most 16384, K^2 at most 256
+        entries[j * strata + s] =
+            glm::uvec2(chunk[j] % static_cast<uint32_t>(image.width) | static_cast<uint32_t>(s) << 16,
+                       chunk[j] / static_cast<uint32_t>(image.width));
+    pixel_list_.upload(entries.data(), sizeof(glm::uvec2) * n);
+    ms += dispatch_list(bindings, n, k);
+    samples.resize(3 * n);
+    pixels_.download(samples.data(), sizeof(vec4) * 3 * n);
+    for (size_t j = 0; j < chunk.size(); ++j) {
+      // The strata's sums in the order a tile's dispatches add them (render/direct_pass.glsl).
+      vec4 colour = samples[j * strata], depth_normal = samples[n + j * strata], uv_error = samples[2 * n + j * strata];
+      for (size_t s = 1; s < strata; ++s) {
+        colour = colour + samples[j * strata + s];
+        depth_normal = depth_normal + samples[n + j * strata + s];
+        uv_error = uv_error + samples[2 * n + j * strata + s];
+      }
+      if (!counts_work_) colour = colour / static_cast<float>(strata);
+      const uint32_t at = chunk[j];
+      image.set(at, counts_work_ ? image.at(at) + glm::vec3(colour) : glm::vec3(colour));  // work: both passes'
+      image.alpha[at] = colour.a;
+      aovs[at] = aov_pixel(depth_normal, uv_error, std::round(colour.a * float(k * k)), k);
+      aovs[at].error += edge[at] / static_cast<float>(k);  // the first pass's edge term over K (eq. 3)
+    }
+  }
+  return ms;
 }
 
 void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
@@ -252,7 +294,6 @@ void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& imag
       plan_refinement(estimates, adaptive_budget_, adaptive_samples_per_axis_,
                       time_ms ? (*time_ms - stats.gpu_ms) / ms_per_work : default_refinement_work(aovs.size()));
   const size_t chunk_limit = static_cast<size_t>(tile_size_) * tile_size_;
-  std::vector<vec4> sums(3 * chunk_limit);
   size_t done = 0;
   while (done < plan.size()) {
     const std::span<const RefinedPixel> next(plan.begin() + done, std::min(plan.size() - done, chunk_limit));
@@ -267,23 +308,8 @@ void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& imag
           group.push_back(p.index);
           work_done += refinement_cost(k, p.textured);
         }
-      if (group.empty()) continue;
       std::ranges::sort(group);
-      std::vector<glm::uvec2> positions(group.size());
-      for (size_t j = 0; j < group.size(); ++j)
-        positions[j] =
-            glm::uvec2(group[j] % static_cast<uint32_t>(image.width), group[j] / static_cast<uint32_t>(image.width));
-      pixel_list_.upload(positions.data(), sizeof(glm::uvec2) * group.size());
-      for (int s = 0; s < k * k; ++s) refine_ms += dispatch_list(bindings, group.size(), s, k);
-      pixels_.download(sums.data(), sizeof(vec4) * 3 * group.size());
-      for (size_t j = 0; j < group.size(); ++j) {
-        const uint32_t at = group[j];
-        const vec4 pixel = sums[j];
-        image.set(at, counts_work_ ? image.at(at) + glm::vec3(pixel) : glm::vec3(pixel));  // work: both passes'
-        image.alpha[at] = pixel.a;
-        aovs[at] = aov_pixel(sums[group.size() + j], sums[2 * group.size() + j], std::round(pixel.a * float(k * k)), k);
-        aovs[at].error += edge[at] / static_cast<float>(k);  // the first pass's edge term over K (eq. 3)
-      }
+      refine_ms += refine_group(bindings, group, k, image, aovs, edge);
     }
     done += count;
     ms_per_work = refine_ms / work_done;

@@ -61,8 +61,13 @@ class DirectPass {
   std::vector<const vk::Buffer*> bindings() const;  // scene buffers, pixels, diffraction buffers
   // Renders stratum `stratum` of ss:K into pixels_ for the tile's w x h pixels at (x0, y0); its device ms.
   double dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h, int stratum);
-  // Renders stratum `stratum` of K x K into pixels_ for the first `count` pixels of pixel_list_; its device ms.
-  double dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int stratum, int k);
+  // Renders the first `count` entries of pixel_list_ (each a pixel and one of its K x K strata) into
+  // pixels_, one entry a slot; its device ms.
+  double dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int k);
+  // Renders `pixels` again with K x K strata each, as many pixels a dispatch as pixels_ holds strata for,
+  // into `image` and `aovs` (the error with the first pass's edge term over K); its device ms.
+  double refine_group(std::span<const vk::Buffer* const> bindings, std::span<const uint32_t> pixels, int k,
+                      Image& image, std::vector<AovPixel>& aovs, std::span<const float> edge);
   // GpuTile::list.y of a dispatch: 1 leaves the texture's error estimate out (another colour-map integral
   // per tap). Only the error channel needs it, and filtered:adaptive's first pass, which ranks by it.
   uint32_t skips_estimate(bool refining) const;
@@ -86,8 +91,9 @@ class DirectPass {
   std::future<std::unique_ptr<vk::Kernel>> compiling_;
   DiffractionBuffers diffraction_;
   SceneBuffers buffers_;
+  int list_capacity_;  // filtered:adaptive: the strata a dispatch of the refinement renders at most
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range
-  vk::Buffer pixel_list_;  // filtered:adaptive: up to a tile's worth of frame positions to refine
+  vk::Buffer pixel_list_;  // filtered:adaptive: up to list_capacity_ strata (pixel positions) to render
   std::unique_ptr<vk::Kernel> kernel_;
 };
 

@@ -207,7 +207,7 @@ vec4 radiance(vec2 film, float pixel_step) {
   return vec4(shade(o, d, hit, film, pixel_step), hit.material == kNoHit ? 0.0 : 1.0);
 }
 
-// filtered:adaptive's refinement renders listed pixels (tile.list.x > 0) anywhere in the frame.
+// filtered:adaptive's refinement renders listed strata of pixels (tile.list.x > 0) anywhere in the frame.
 layout(binding = FACET_RENDER_BINDING_PIXEL_LIST) uniform usamplerBuffer pixel_list;
 
 // This invocation's workgroup's block: block g s mod n of the n blocks (g: the workgroup's index in
@@ -227,29 +227,36 @@ uvec2 tile_position() {
 void main() {
   uvec2 pixel;
   uint i;  // the pixel's slot in the pixel buffer
-  if (tile.list.x != 0u) {
+  uint k = tile.stratum.w;
+  uvec2 stratum = tile.stratum.xy;
+  bool listed = tile.list.x != 0u;
+  if (listed) {
     i = spread_block() * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
     if (i >= tile.list.x) return;
-    pixel = texelFetch(pixel_list, int(i)).xy;
+    // An entry is one stratum of a pixel: (x | stratum << 16, y), the stratum sy k + sx.
+    uvec2 entry = texelFetch(pixel_list, int(i)).xy;
+    pixel = uvec2(entry.x & 0xffffu, entry.y);
+    stratum = uvec2((entry.x >> 16u) % k, (entry.x >> 16u) / k);
   } else {
     uvec2 at = tile_position();
     if (at.x >= tile.rect.z || at.y >= tile.rect.w) return;
     pixel = at + tile.rect.xy;
     i = at.y * tile.rect.z + at.x;
   }
-  uint k = tile.stratum.w;
   float step = 1.0 / float(k);
-  vec4 sample_value = radiance(vec2(pixel) + (vec2(tile.stratum.xy) + 0.5) * step, step);
+  vec4 sample_value = radiance(vec2(pixel) + (vec2(stratum) + 0.5) * step, step);
   if (kCountsWork) sample_value = vec4(float(facet_work_fma), float(facet_work_reads), 0.0, 1.0);
-  // The strata add up in the order of a loop over sy, then sx, and the sum is scaled once at the
-  // end: the same float operations as averaging them within one invocation.
-  vec4 sum = tile.stratum.z != 0u ? pixels[i] + sample_value : sample_value;
+  // A tile's strata add up here, one dispatch each, in the order of a loop over sy, then sx, and the sum
+  // is scaled once at the end: the same float operations as averaging them within one invocation. A listed
+  // entry keeps its own sample, which the host adds up in the same order (DirectPass::refine).
+  bool adds = !listed && tile.stratum.z != 0u;
+  vec4 sum = adds ? pixels[i] + sample_value : sample_value;
   // Work adds up over the strata: a pixel's work is their sum (renderer/gpu/work_per_pixel.cpp).
-  pixels[i] = tile.stratum.z == k * k - 1u && !kCountsWork ? sum / float(k * k) : sum;
+  pixels[i] = !listed && tile.stratum.z == k * k - 1u && !kCountsWork ? sum / float(k * k) : sum;
   if (kWritesAovs) {  // sums over the strata, divided on the host by the hits (the error by k^2)
     uint n = tile.rect.z * tile.rect.w;  // a list's length for a list (rect = (0, 0, n, 1))
-    pixels[n + i] = tile.stratum.z != 0u ? pixels[n + i] + aov_depth_normal : aov_depth_normal;
-    pixels[2u * n + i] = tile.stratum.z != 0u ? pixels[2u * n + i] + aov_uv_error : aov_uv_error;
+    pixels[n + i] = adds ? pixels[n + i] + aov_depth_normal : aov_depth_normal;
+    pixels[2u * n + i] = adds ? pixels[2u * n + i] + aov_uv_error : aov_uv_error;
   }
 }
 
