@@ -181,6 +181,23 @@ TEST(AdaptiveRefinement, RefinedPixelsAreFilteredPerStratumAndTheRestFiltered) {
             static_cast<std::size_t>(std::ranges::count_if(estimate, [](float e) { return e > 0; })));
 }
 
+// The refinement renders each level's pixels as one list of strata, as many pixels a dispatch as the list
+// holds, at least one pixel's K^2 strata: with 8 x 8 tiles (64 entries) K = 16 takes a dispatch per pixel,
+// with the default tiles one for all. The pixels do not depend on it (each is its strata's sum in one order),
+// and the error budget refines at every level up to 16.
+TEST(AdaptiveRefinement, PixelsDoNotDependOnHowManyStrataADispatchHolds) {
+  auto context = test::make_validated_context();
+  const Scene scene = objects_scene();
+  const gpu::RenderMethod m = method("filtered:adaptive:16", error_budget(0.004), true);
+  gpu::RenderStats small_stats, large_stats;
+  const Image small = gpu::render_direct(*context, scene, kWidth, kHeight, m, &small_stats, {}, 8);
+  const Image large = gpu::render_direct(*context, scene, kWidth, kHeight, m, &large_stats, {}, 64);
+  EXPECT_GT(small_stats.refined_pixels, 0u);
+  EXPECT_EQ(small_stats.refined_pixels, large_stats.refined_pixels);
+  for (std::size_t i = 0; i < small.pixel_count(); ++i) ASSERT_EQ(max_abs_difference(small, large, i), 0.0f) << i;
+  EXPECT_EQ(error_channel(small), error_channel(large));
+}
+
 // Against a 16x16 reference: the default budget (2 more rays per pixel on average) and an error budget
 // that refines every pixel with a non-zero estimate each lower filtered's error, the larger budget more.
 // Measured (64x36, 2026-11-27): filtered 0.0381, default 0.0142, every estimated pixel 0.0096 (filtered:ss:4
