@@ -5,12 +5,14 @@
 #include <queue>
 #include <tuple>
 
+#include "gpu/render_layout.hpp"
+
 namespace facet::gpu {
 
 namespace {
 
 // Sub-footprints per axis of one stratum (render/texture_sampling.glsl: kFilteredSplit, refined_split).
-constexpr int kFirstPassSplit = 2;
+constexpr int kFirstPassSplit = FACET_RENDER_FILTERED_SPLIT;
 int stratum_split(int samples_per_axis) {
   if (samples_per_axis == 1) return kFirstPassSplit;
   return std::max(1, (2 * kFirstPassSplit + samples_per_axis - 1) / samples_per_axis);

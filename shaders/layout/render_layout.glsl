@@ -32,8 +32,9 @@
 #define FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_1 17
 #define FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_2 18
 #define FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_3 19
-// filtered:adaptive's refinement: the frame positions of the pixels a listed dispatch renders, one RG32UI
-// texel each (render/direct_pass.glsl; renderer/gpu/direct_pass.cpp).
+// filtered:adaptive's refinement: the strata a listed dispatch renders, one RG32UI texel each, a pixel's
+// frame position and the stratum's index as (x | stratum << 16, y) (render/direct_pass.glsl;
+// renderer/gpu/direct_pass.cpp).
 #define FACET_RENDER_BINDING_PIXEL_LIST 20
 #define FACET_RENDER_BINDING_COUNT 21
 #define FACET_RENDER_PREINTEGRATED_SLICES 4  // the word bindings above
@@ -79,5 +80,10 @@
 
 // Workgroups are FACET_RENDER_WORKGROUP x FACET_RENDER_WORKGROUP pixels of a tile.
 #define FACET_RENDER_WORKGROUP 8
+
+// `filtered` tiles a textured pixel with FACET_RENDER_FILTERED_SPLIT^2 sub-footprints per axis pair
+// (render/texture_sampling.glsl, kFilteredSplit); filtered:adaptive prices its refinement with it
+// (renderer/gpu/adaptive_refinement.cpp).
+#define FACET_RENDER_FILTERED_SPLIT 2
 
 #endif

@@ -386,7 +386,7 @@ vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
 // mixture of one Gaussian per tap of split x split sub-parallelograms that tile the pixel's
 // (docs/colormap_filtering.md, "Mixture of tap laws"); 3 lowers the error further at about twice the
 // device time, 2 was kept for cost.
-const float kFilteredSplit = 2.0;
+const float kFilteredSplit = float(FACET_RENDER_FILTERED_SPLIT);
 
 // The albedo of a colour-mapped texture at the hit, by the method of kTextureMethod, averaged over
 // the taps of the anisotropic footprint with uv axes duv_dx, duv_dy (unused by naive). `mip` and
