@@ -18,11 +18,12 @@ int stratum_split(int samples_per_axis) {
   return std::max(1, (2 * kFirstPassSplit + samples_per_axis - 1) / samples_per_axis);
 }
 
-// An upgrade of pixel `index` from level `from` to `to` and what it removes per unit of work.
+// An upgrade of pixel `index` to level `to`: its work from the pixel's level, and what it removes per unit of it.
 struct Upgrade {
   double gain_per_work;
   std::uint32_t index;
-  int from, to;
+  int to;
+  double work;
   // The priority queue pops the largest gain first, then the lowest index.
   bool operator<(const Upgrade& other) const {
     return std::tie(gain_per_work, other.index) < std::tie(other.gain_per_work, index);
@@ -79,12 +80,14 @@ std::vector<RefinedPixel> plan_refinement(std::span<const PixelEstimate> pixels,
     std::priority_queue<Upgrade> upgrades;
     auto offer = [&](std::uint32_t i, int from) {
       const PixelEstimate& p = pixels[i];
+      // The first pass is paid already: a pixel at level 1 has cost the refinement nothing.
       const double now = predicted_squared_error(p, from), cost = from == 1 ? 0.0 : refinement_cost(from, p.textured);
-      Upgrade best{0.0, i, from, from};
+      Upgrade best{0.0, i, from, 0.0};
       for (int k : levels)
         if (k > from) {
-          const double gain = (now - predicted_squared_error(p, k)) / (refinement_cost(k, p.textured) - cost);
-          if (gain > best.gain_per_work) best = {gain, i, from, k};
+          const double work_k = refinement_cost(k, p.textured) - cost;
+          const double gain = (now - predicted_squared_error(p, k)) / work_k;
+          if (gain > best.gain_per_work) best = {gain, i, k, work_k};
         }
       if (best.to != from) upgrades.push(best);
     };
@@ -93,10 +96,8 @@ std::vector<RefinedPixel> plan_refinement(std::span<const PixelEstimate> pixels,
     while (!upgrades.empty()) {
       const Upgrade u = upgrades.top();
       upgrades.pop();
-      const bool textured = pixels[u.index].textured;
-      const double cost = refinement_cost(u.to, textured) - (u.from == 1 ? 0.0 : refinement_cost(u.from, textured));
-      if (spent + cost > work) continue;  // a cheaper upgrade further down may still fit
-      spent += cost;
+      if (spent + u.work > work) continue;  // a cheaper upgrade further down may still fit
+      spent += u.work;
       level[u.index] = u.to;
       offer(u.index, u.to);
     }
