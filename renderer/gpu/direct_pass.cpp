@@ -293,7 +293,9 @@ void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& imag
   const std::vector<RefinedPixel> plan =
       plan_refinement(estimates, adaptive_budget_, adaptive_samples_per_axis_,
                       time_ms ? (*time_ms - stats.gpu_ms) / ms_per_work : default_refinement_work(aovs.size()));
-  const size_t chunk_limit = static_cast<size_t>(tile_size_) * tile_size_;
+  // A time budget renders the plan in chunks of a tile's pixels, measuring the work's cost after each; the
+  // other budgets in one (refine_group splits a level's pixels into dispatches as pixels_ holds them).
+  const size_t chunk_limit = time_ms ? static_cast<size_t>(tile_size_) * tile_size_ : plan.size();
   size_t done = 0;
   while (done < plan.size()) {
     const std::span<const RefinedPixel> next(plan.begin() + done, std::min(plan.size() - done, chunk_limit));
