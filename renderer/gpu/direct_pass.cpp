@@ -71,6 +71,44 @@ bool uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
   return false;
 }
 
+// The points of the scene's longest colour map of this interpolation on a colour-mapped texture, if every
+// such map has at most FACET_RENDER_WALKED_COLORMAP_POINTS, else 0 (also without any): the shader's walks
+// over a map's points are then unrolled to that many trips (render/texture_sampling.glsl).
+uint32_t unrolled_colormap_points(const Scene& scene, Colormap::Interpolation interpolation) {
+  std::size_t longest = 0;
+  for (const Material& m : scene.materials)
+    if (const auto* t = std::get_if<ColormapTextureMaterial>(&m); t && t->colormap.interpolation() == interpolation)
+      longest = std::max(longest, t->colormap.positions().size());
+  return longest <= FACET_RENDER_WALKED_COLORMAP_POINTS ? static_cast<uint32_t>(longest) : 0u;
+}
+
+// The trips of colormap_at's bisection over the scene's longest colour map (textures' and microsurfaces'),
+// n >= 2 points: the interval j - i = n - 1 falls to at most ceil((j - i) / 2) a trip, so ceil(log2(n - 1)) =
+// bit_width(n - 2) trips end it. The shader unrolls the search to this count.
+uint32_t colormap_search_steps(const Scene& scene) {
+  std::size_t longest = 2;
+  const auto add = [&longest](const Colormap& map) { longest = std::max(longest, map.positions().size()); };
+  for (const Material& m : scene.materials) {
+    if (const auto* t = std::get_if<ColormapTextureMaterial>(&m)) add(t->colormap);
+    if (const auto* s = std::get_if<MicrosurfaceMaterial>(&m)) {
+      if (s->height_colormap) add(*s->height_colormap);
+      if (s->slope_colormap) add(*s->slope_colormap);
+    }
+  }
+  return static_cast<uint32_t>(std::bit_width(longest - 2));
+}
+
+// The trips of the shader's loops over the scene's planes or spheres (render/trace.glsl): their count where
+// there are at most four, so the loops unroll, else FACET_RENDER_LOOPED_TRIPS. The height-field program
+// unrolls a single plane only: each unrolled plane inlines the field traversal once more, and lavapipe's
+// pipeline set-up grows with the inlined code. Scenes with meshes keep the loops: there the unrolled
+// closest-hit loop made the BVH traversal after it slower (colormap_seams_cube `filtered` 1.3-1.7x the
+// device time; docs/render_speed.md, "Loops on lavapipe").
+uint32_t primitive_trips(const Scene& scene, const RenderMethod& method, std::size_t count) {
+  const std::size_t unrolled_at_most = !scene.meshes.empty() ? 0 : traces_height_fields(scene, method) ? 1 : 4;
+  return count <= unrolled_at_most ? static_cast<uint32_t>(count) : FACET_RENDER_LOOPED_TRIPS;
+}
+
 // Whether a microsurface of the scene has this part (height or slope colour map, specular lobe).
 template <typename Part>
 bool some_microsurface_has(const Scene& scene, Part part) {
@@ -125,6 +163,11 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_MICROSURFACE_SLOPE_MAPS,
        some_microsurface_has(scene, &MicrosurfaceMaterial::slope_colormap) ? 1u : 0u},
       {FACET_RENDER_SPEC_MICROSURFACE_LOBES, some_microsurface_has(scene, &MicrosurfaceMaterial::specular) ? 1u : 0u},
+      {FACET_RENDER_SPEC_STEP_COLORMAP_POINTS, unrolled_colormap_points(scene, Colormap::Interpolation::Steps)},
+      {FACET_RENDER_SPEC_LINEAR_COLORMAP_POINTS, unrolled_colormap_points(scene, Colormap::Interpolation::Linear)},
+      {FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS, colormap_search_steps(scene)},
+      {FACET_RENDER_SPEC_PLANE_TRIPS, primitive_trips(scene, method, scene.planes.size())},
+      {FACET_RENDER_SPEC_SPHERE_TRIPS, primitive_trips(scene, method, scene.spheres.size())},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};

@@ -59,7 +59,17 @@
 #define FACET_RENDER_SPEC_MICROSURFACE_HEIGHT_MAPS 16
 #define FACET_RENDER_SPEC_MICROSURFACE_SLOPE_MAPS 17
 #define FACET_RENDER_SPEC_MICROSURFACE_LOBES 18
-#define FACET_RENDER_SPEC_COUNT 19
+#define FACET_RENDER_SPEC_STEP_COLORMAP_POINTS 19
+#define FACET_RENDER_SPEC_LINEAR_COLORMAP_POINTS 20
+#define FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS 21
+#define FACET_RENDER_SPEC_PLANE_TRIPS 22
+#define FACET_RENDER_SPEC_SPHERE_TRIPS 23
+#define FACET_RENDER_SPEC_COUNT 24
+// The value of FACET_RENDER_SPEC_PLANE_TRIPS and _SPHERE_TRIPS for a loop over the scene's count (render/trace.glsl).
+#define FACET_RENDER_LOOPED_TRIPS 0xffffffffu
+// Colour maps of up to this many points are walked whole (not searched); where every map of a kind in a
+// scene is, its walks are unrolled to the longest's points (render/texture_sampling.glsl).
+#define FACET_RENDER_WALKED_COLORMAP_POINTS 16
 
 // The code a variant of the program compiles in: its FACET_VARIANT_CODE is a sum of these
 // (render/direct_pass.glsl; shaders/CMakeLists.txt lists the variants, renderer/gpu/direct_pass_variant.hpp

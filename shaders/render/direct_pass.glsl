@@ -62,6 +62,11 @@ layout(constant_id = FACET_RENDER_SPEC_MICROSURFACE_LOBES) const bool kMicrosurf
 layout(constant_id = FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS) const bool kHasLinearColormaps = true;
 layout(constant_id = FACET_RENDER_SPEC_HAS_STEP_COLORMAPS) const bool kHasStepColormaps = true;
 layout(constant_id = FACET_RENDER_SPEC_WHOLE_MIP_TEXELS) const bool kWholeMipTexels = false;  // render/texture_sampling.glsl
+layout(constant_id = FACET_RENDER_SPEC_STEP_COLORMAP_POINTS) const uint kStepColormapPoints = 0u;      // the same
+layout(constant_id = FACET_RENDER_SPEC_LINEAR_COLORMAP_POINTS) const uint kLinearColormapPoints = 0u;  // the same
+layout(constant_id = FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS) const uint kColormapSearchSteps = 32u;   // the same
+layout(constant_id = FACET_RENDER_SPEC_PLANE_TRIPS) const uint kPlaneTrips = FACET_RENDER_LOOPED_TRIPS;    // render/trace.glsl
+layout(constant_id = FACET_RENDER_SPEC_SPHERE_TRIPS) const uint kSphereTrips = FACET_RENDER_LOOPED_TRIPS;  // the same
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS

@@ -53,15 +53,17 @@ vec4 bilinear(TexelQuad q) { return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t
 // Bilinear between texel centres, periodic (at level 0 as renderer/cpu/material_shading.cpp).
 vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(texture_level(level), uv)); }
 
-// Both levels through one call of sample_level: lavapipe compiles each call site of an inlined
-// function on its own, and trilinear lookups are made at many sites.
+// Both levels through one call of sample_level in the source (lavapipe compiles each call site of an
+// inlined function on its own, and trilinear lookups are made at many sites), in two unrolled trips: a
+// loop of one or two trips inside the taps' loop cost lavapipe more than a second lookup of the finest
+// level where nothing blends (the chain's coarsest level; docs/render_speed.md, "Loops on lavapipe").
 vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod) {
   float l0 = floor(lod);
   uint level = first + uint(l0);
   bool blends = l0 + 1.0 < float(count);
   vec4 fine = vec4(0.0), coarse = vec4(0.0);
-  for (uint i = 0u; i < (blends ? 2u : 1u); ++i) {
-    vec4 s = sample_level(level + i, uv);
+  [[unroll]] for (uint i = 0u; i < 2u; ++i) {
+    vec4 s = sample_level(level + (blends ? i : 0u), uv);
     if (i == 0u) fine = s; else coarse = s;
   }
   return blends ? mix(fine, coarse, lod - l0) : fine;
@@ -77,11 +79,16 @@ vec3 colormap_at(GpuColormap map, float value) {
   if (!(t > colormap_point(first).w)) return colormap_point(first).rgb;  // NaN takes the first colour
   if (t >= colormap_point(last).w) return colormap_point(last).rgb;
   // Bisection for the segment with points[i].w <= t < points[i + 1].w: log2(count) reads (the
-  // microsurface pass looks up 256-point maps at 16-32 nodes per pixel).
+  // microsurface pass looks up 256-point maps at 16-32 nodes per pixel), in kColormapSearchSteps
+  // unrolled trips, enough for the scene's longest map; a shorter map's search is done sooner and its
+  // last trips change nothing.
   uint i = first, j = last;
-  while (j - i > 1u) {
+  [[unroll]] for (uint trip = 0u; trip < kColormapSearchSteps; ++trip) {
     uint mid = (i + j) / 2u;
-    if (colormap_point(mid).w <= t) i = mid; else j = mid;
+    bool below = colormap_point(mid).w <= t;
+    bool open = j - i > 1u;
+    i = open && below ? mid : i;
+    j = open && !below ? mid : j;
   }
   vec4 a = colormap_point(i), b = colormap_point(j);
   return map.info.z == 1u ? a.rgb : mix(a.rgb, b.rgb, (t - a.w) / (b.w - a.w));
@@ -112,7 +119,8 @@ vec2 colormap_below_above(float z) {
   return z > 0.0 ? vec2(1.0 - tail, tail) : vec2(tail, 1.0 - tail);
 }
 
-// The first control point in [first, last] whose position exceeds `position` (last if none).
+// The first control point in [first, last] whose position exceeds `position` (last if none). A loop, not
+// unrolled as colormap_at's search: the walked maps' lanes call it on an empty range (first = last).
 uint colormap_first_point_above(uint first, uint last, float position) {
   uint lo = first, hi = last;  // the answer lies in [lo, hi]; hi = last when no point is above
   while (lo < hi) {
@@ -153,7 +161,14 @@ const float kColormapLinearSigmaMax = 1e20;
 
 // Linear maps of at most this many points are walked whole: the two binary searches' loops of loads cost
 // lavapipe more than the few points they skip (docs/render_speed.md, "Linear colour maps as a sum of slopes").
-const uint kColormapWalkedPoints = 16u;
+const uint kColormapWalkedPoints = FACET_RENDER_WALKED_COLORMAP_POINTS;
+
+// Unrolled walks. Where every map of a kind in the scene has at most kColormapWalkedPoints points, the
+// specialization constant kStepColormapPoints (kLinearColormapPoints) is the longest's count, else 0. The
+// walks then take that many trips whatever the lane's map, unrolled (a loop costs lavapipe its control on
+// every trip, for all lanes: docs/render_speed.md, "Loops on lavapipe"); a trip past the lane's last
+// point looks that point up again, whose colour change is 0, so it adds exactly nothing.
+uint colormap_walk_trips(uint unrolled, uint points) { return unrolled > 0u ? unrolled : points; }
 
 // The points [begin, end] a linear map's sums visit: those within kColormapReach s of m and the one beyond
 // on each side (binary searches; beyond them a Gaussian's weights are 0 or 1 to float precision), or the
@@ -196,13 +211,14 @@ vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
   float za = 0.0;
   ColormapSlopeKnot knot_a = ColormapSlopeKnot(0.0, 1.0);
   vec3 sum = vec3(0.0);
-  for (uint k = begin; k < (steps ? begin : end + 1u); ++k) {
-    vec4 b = colormap_point(k);
+  uint trips = colormap_walk_trips(kLinearColormapPoints, steps ? 0u : end + 1u - begin);
+  [[unroll]] for (uint j = 0u; j < trips; ++j) {
+    vec4 b = colormap_point(min(begin + j, end));
     float zb = colormap_standardize(b.w, m, s);
     ColormapSlopeKnot knot_b = colormap_slope_knot(zb);
     float dz = max(zb - za, 1e-30);  // no 0/0: the clamp below decides a jump's weight
     float w = (clamp(-za, 0.0, dz) + knot_a.excess - knot_b.excess) / dz;
-    sum += (b.rgb - a.rgb) * (k == begin ? 1.0 : clamp(w, knot_b.above, knot_a.above));
+    sum += (b.rgb - a.rgb) * (j == 0u ? 1.0 : clamp(w, knot_b.above, knot_a.above));
     a = b;
     za = zb;
     knot_a = knot_b;
@@ -222,11 +238,13 @@ vec3 colormap_steps_filtered(GpuColormap map, float m, float s, bool steps) {
   uint first = map.info.x, last = steps ? map.info.x + map.info.y - 1u : first;
   vec3 before = colormap_point(first).rgb;
   vec3 mean = before;
-  for (uint k = first + 1u; k <= last; ++k) {
-    vec4 p = colormap_point(k);
+  uint trips = colormap_walk_trips(kStepColormapPoints, last - first + 1u);
+  [[unroll]] for (uint j = 1u; j < trips; ++j) {
+    vec4 p = colormap_point(min(first + j, last));
     float z = colormap_standardize(p.w, m, s);
-    if (z > kColormapReach) break;
-    mean += colormap_below_above(z).y * (p.rgb - before);
+    bool beyond = z > kColormapReach;  // so are the later points: the loop stops, unrolled trips add 0
+    if (kStepColormapPoints == 0u && beyond) break;
+    mean += (beyond ? 0.0 : colormap_below_above(z).y) * (p.rgb - before);
     before = p.rgb;
   }
   return mean;
@@ -324,8 +342,9 @@ vec3 colormap_linear_second_moment(GpuColormap map, float m, float s, vec3 mean,
   ColormapKnot ka = colormap_knot_coarse(za);
   float pdf_a = sf_normal_pdf(za);
   vec3 second = a.rgb * a.rgb * ka.Phi;
-  for (uint i = window.begin; i < (steps ? window.begin : window.end); ++i) {
-    vec4 b = colormap_point(i + 1u);
+  uint trips = colormap_walk_trips(kLinearColormapPoints, steps ? 1u : window.end - window.begin + 1u);
+  [[unroll]] for (uint j = 1u; j < trips; ++j) {
+    vec4 b = colormap_point(min(window.begin + j, window.end));  // a repeated point adds 0 (q = dPhi = 0)
     b.rgb -= mean;
     float zb = colormap_standardize(b.w, m, s);
     ColormapKnot kb = colormap_knot_coarse(zb);
@@ -353,15 +372,20 @@ vec3 colormap_steps_second_moment(GpuColormap map, float m, float s, vec3 mean, 
   vec3 step = colormap_point(first).rgb - mean;  // the current step's colour less the mean
   float below_step = 0.0, above_step = 1.0;      // P(t < x), P(t > x) at its lower end: the first reaches -inf
   vec3 second = vec3(0.0);
-  for (uint k = first + 1u; k <= last; ++k) {
-    vec4 p = colormap_point(k);
+  bool beyond = false;  // a point beyond kColormapReach s was passed: the loop stops, unrolled trips add 0
+  uint trips = colormap_walk_trips(kStepColormapPoints, last - first + 1u);
+  [[unroll]] for (uint j = 1u; j < trips; ++j) {
+    vec4 p = colormap_point(min(first + j, last));
     float z = colormap_standardize(p.w, m, s);
     vec2 below_above = colormap_below_above(z);
-    second += step * step * max(z > 0.0 ? above_step - below_above.y : below_above.x - below_step, 0.0);
-    step = p.rgb - mean;
-    below_step = below_above.x;
-    above_step = below_above.y;
-    if (z > kColormapReach) break;
+    if (!beyond) {
+      second += step * step * max(z > 0.0 ? above_step - below_above.y : below_above.x - below_step, 0.0);
+      step = p.rgb - mean;
+      below_step = below_above.x;
+      above_step = below_above.y;
+    }
+    beyond = beyond || z > kColormapReach;
+    if (kStepColormapPoints == 0u && beyond) break;
   }
   return second + step * step * above_step;
 }
@@ -425,25 +449,31 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   vec2 tap_major = major * size / along, tap_minor = minor * size / split;  // one tap's axes, in texels
   vec3 colour = vec3(0.0);
   MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
-  for (float k = 0.0; k < along; k += 1.0) {
-    for (float j = 0.0; j < split; j += 1.0) {
-      vec2 tap = uv + major * ((k + 0.5) / along - 0.5) + minor * ((j + 0.5) / split - 0.5);
-      if (kTextureMethod == 2u) {
-        colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod).rgb;
-      } else if (kTextureMethod == 1u) {
-        colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod).x);
-#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
-      } else {
-        vec2 t = footprint_moments(levels, tap, tap_major, tap_minor);
-        float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
-        vec3 mean = colormap_gaussian(map, t.x, sigma);
-        colour += mean;
-        if (estimates) spread += colormap_spread(map, t.x, sigma, mean);
-#endif
-      }
-    }
-  }
+  // One loop over the taps, row (j across) within column (k along), not a loop in a loop: lavapipe runs a
+  // loop's control for all its lanes on every trip, and an inner loop's entry and exit on every outer trip,
+  // which cost the noise plane's `filtered` a quarter of its device time (docs/render_speed.md, "Loops on
+  // lavapipe"). The sums run in the nested loops' order.
   float count = along * split;
+  float k = 0.0, j = 0.0;
+  for (float i = 0.0; i < count; i += 1.0) {
+    vec2 tap = uv + major * ((k + 0.5) / along - 0.5) + minor * ((j + 0.5) / split - 0.5);
+    if (kTextureMethod == 2u) {
+      colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod).rgb;
+    } else if (kTextureMethod == 1u) {
+      colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod).x);
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+    } else {
+      vec2 t = footprint_moments(levels, tap, tap_major, tap_minor);
+      float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
+      vec3 mean = colormap_gaussian(map, t.x, sigma);
+      colour += mean;
+      if (estimates) spread += colormap_spread(map, t.x, sigma, mean);
+#endif
+    }
+    bool column_done = j + 1.0 == split;
+    j = column_done ? 0.0 : j + 1.0;
+    k = column_done ? k + 1.0 : k;
+  }
   vec3 albedo = colour / count;
   if (estimates) spread /= count;
   return albedo;

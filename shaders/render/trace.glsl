@@ -1,7 +1,8 @@
 // Closest hits of rays against the scene's planes, spheres and BVH of triangles, any hit for shadow
 // rays, and the surface parameterisation (uv, dp/du, dp/dv) at a hit: what every material's shading
 // starts from. The including shader declares the specialization constants kHasSpheres and
-// kHasTriangles (false: the scene has none, and their loops are compiled out) and kHasMicrosurface.
+// kHasTriangles (false: the scene has none, and their loops are compiled out), kPlaneTrips and
+// kSphereTrips (below) and kHasMicrosurface.
 // With `fields`, microsurface planes are their height fields (render/heightfield_trace.glsl), else
 // flat rectangles.
 #ifndef FACET_RENDER_TRACE_GLSL
@@ -47,6 +48,12 @@ float trace_height_field(uint i, vec3 o, vec3 d, float t_max, out vec2 q) {
 }
 #endif
 
+// The trips of the loops over planes and spheres: the scene's count where it has few, a constant, so the
+// loops are unrolled (lavapipe pays a loop's control on every trip, for every lane: docs/render_speed.md,
+// "Loops on lavapipe"), else (FACET_RENDER_LOOPED_TRIPS) the count the scene's globals hold.
+uint plane_trips() { return kPlaneTrips != FACET_RENDER_LOOPED_TRIPS ? kPlaneTrips : globals.counts.x; }
+uint sphere_trips() { return kSphereTrips != FACET_RENDER_LOOPED_TRIPS ? kSphereTrips : globals.counts.y; }
+
 // The closest hit before hit.t, or with `any_hit` the first one found in traversal order (shadow
 // rays need only whether one exists; callers pass a constant, so each use compiles to one variant).
 Hit trace_triangles(vec3 o, vec3 d, Hit hit, bool any_hit) {
@@ -87,7 +94,7 @@ bool inside_plane_rectangle(GpuPlane plane, vec3 p) {
 
 Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields) {
   Hit hit = Hit(t_max, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0));
-  for (uint i = 0u; i < globals.counts.x; ++i) {
+  [[unroll]] for (uint i = 0u; i < plane_trips(); ++i) {
     GpuPlane plane = plane_at(i);
 #ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(plane, fields)) {
@@ -107,7 +114,7 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields) {
       hit = Hit(t, plane.normal.xyz, plane.material.x, kPlane, i, vec2(0.0));
   }
 #if FACET_VARIANT_HAS(FACET_CODE_SPHERES)
-  for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
+  [[unroll]] for (uint i = 0u; kHasSpheres && i < sphere_trips(); ++i) {
     GpuSphere sphere = sphere_at(i);
     vec4 s = sphere.center_radius;
     float t = intersect_sphere(o, d, s.xyz, s.w, t_min, hit.t);
@@ -127,7 +134,7 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields) {
 bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float field_skip) {
   uint skip_plane = from.primitive == kPlane ? from.index : kNoHit;
   uint skip_sphere = from.primitive == kSphere && dot(from.normal, n) > 0.0 ? from.index : kNoHit;
-  for (uint i = 0u; i < globals.counts.x; ++i) {
+  [[unroll]] for (uint i = 0u; i < plane_trips(); ++i) {
     GpuPlane plane = plane_at(i);
 #ifdef FACET_HEIGHT_FIELDS
     if (is_height_field(plane, fields)) {  // a field shadows itself: never skipped
@@ -141,7 +148,7 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float field_skip) {
     if (t > 0.0 && inside_plane_rectangle(plane, o + t * l)) return true;
   }
 #if FACET_VARIANT_HAS(FACET_CODE_SPHERES)
-  for (uint i = 0u; kHasSpheres && i < globals.counts.y; ++i) {
+  [[unroll]] for (uint i = 0u; kHasSpheres && i < sphere_trips(); ++i) {
     vec4 s = sphere_at(i).center_radius;
     if (i != skip_sphere && intersect_sphere(o, l, s.xyz, s.w, 0.0, kInfinity) > 0.0) return true;
   }

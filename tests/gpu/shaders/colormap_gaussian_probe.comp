@@ -1,5 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 // Test probe of render/texture_sampling.glsl: colormap_gaussian(map, mu, sigma) of the direct pass,
 // or with what = 1 the spread of the mapped colour around it (colormap_spread, the error estimate's
 // eq. 2), with the scene's buffers at their slots (layout/render_layout.glsl), for records (mu, sigma,
@@ -14,6 +15,11 @@ const bool kEstimatesError = false;  // texture_sampling.glsl's own use of the s
 const bool kHasLinearColormaps = true;
 const bool kHasStepColormaps = true;
 const bool kWholeMipTexels = false;  // no texture is looked up here
+// The walks and searches as loops over each map's own points (the unrolled ones are checked against
+// these on scenes: tests/gpu/unrolled_loops_test.cpp).
+const uint kStepColormapPoints = 0u;
+const uint kLinearColormapPoints = 0u;
+const uint kColormapSearchSteps = 32u;  // colormap_at's search: enough for any map
 
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
