@@ -1,10 +1,32 @@
 #include "report/bench_record.hpp"
 
+#include <algorithm>
+
 namespace facet::report {
 
+namespace {
+
+// The ms of a frame's `per_pixel` operations at `per_second`, if both are measured.
+std::optional<double> frame_ms_at(int width, int height, const std::optional<double>& per_pixel,
+                                  const std::optional<double>& per_second) {
+  if (!per_pixel || !per_second || !(*per_second > 0.0)) return std::nullopt;
+  return 1e3 * static_cast<double>(width) * height * *per_pixel / *per_second;
+}
+
+}  // namespace
+
+std::optional<double> BenchRecord::roofline_fma_ms() const {
+  return frame_ms_at(width, height, work_fma_per_pixel, probe_fma_per_second);
+}
+
+std::optional<double> BenchRecord::roofline_reads_ms() const {
+  return frame_ms_at(width, height, reads_per_pixel, probe_texel_reads_per_second);
+}
+
 std::optional<double> BenchRecord::roofline_ms() const {
-  if (!probe_fma_per_second || !work_fma_per_pixel || !(*probe_fma_per_second > 0.0)) return std::nullopt;
-  return 1e3 * static_cast<double>(width) * height * *work_fma_per_pixel / *probe_fma_per_second;
+  const std::optional<double> fma = roofline_fma_ms(), reads = roofline_reads_ms();
+  if (fma && reads) return std::max(*fma, *reads);
+  return fma ? fma : reads;
 }
 
 std::optional<double> BenchRecord::device_vs_roofline() const {
@@ -42,8 +64,11 @@ nlohmann::json to_json(const BenchRecord& r) {
   json["image"] = r.image;
   json["heatmap"] = r.heatmap;
   json["probe_fma_per_second"] = number_or_null(r.probe_fma_per_second);
+  json["probe_texel_reads_per_second"] = number_or_null(r.probe_texel_reads_per_second);
   json["work_fma_per_pixel"] = number_or_null(r.work_fma_per_pixel);
   json["reads_per_pixel"] = number_or_null(r.reads_per_pixel);
+  json["roofline_fma_ms"] = number_or_null(r.roofline_fma_ms());
+  json["roofline_reads_ms"] = number_or_null(r.roofline_reads_ms());
   json["roofline_ms"] = number_or_null(r.roofline_ms());
   json["device_vs_roofline"] = number_or_null(r.device_vs_roofline());
   if (r.error_estimate) json.update(to_json(*r.error_estimate));

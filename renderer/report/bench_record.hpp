@@ -31,13 +31,18 @@ struct BenchRecord {
   std::optional<ErrorEstimateQuality> error_estimate;  // methods that estimate their per-pixel error (filtered...)
   // The roofline (docs/report.md): the host's measured peak (gpu/peak_probe.hpp) and the method's work
   // per pixel, counted by its instrumented render pass (gpu/work_per_pixel.hpp); unset: not measured.
-  std::optional<double> probe_fma_per_second;
+  std::optional<double> probe_fma_per_second, probe_texel_reads_per_second;
   std::optional<double> work_fma_per_pixel, reads_per_pixel;
   std::optional<CameraPathSeries> path;  // along the scene's camera path (report/camera_path_series.hpp)
 
   bool ok() const { return !error.has_value(); }
   double time_ms() const { return timing.headline().median; }
-  // width x height x work / peak: the device time of a frame that ran at the host's FMA peak.
+  // width x height x work / peak: the device time of a frame that ran at the host's FMA peak; of its texel
+  // fetches at the host's fetch peak.
+  std::optional<double> roofline_fma_ms() const;
+  std::optional<double> roofline_reads_ms() const;
+  // The larger of the two (either where the other is not measured): the time below which no frame of this
+  // work can run on this host.
   std::optional<double> roofline_ms() const;
   // Median device time / roofline_ms: how many times slower than the limit.
   std::optional<double> device_vs_roofline() const;
@@ -48,11 +53,11 @@ struct BenchRecord {
 // error, or time_ms (median; device time when there is one, else wall), time_ms_min, time_ms_max,
 // time_source ("gpu" | "wall"), wall_ms (median), wall_ms_min, wall_ms_max, gpu_ms (median or null),
 // repeats, prepare_ms, phases ({name: wall ms}), the metrics of facet compare (rmse, rel_mse, psnr, max_abs, ssim,
-// flip), image, heatmap, probe_fma_per_second, work_fma_per_pixel, reads_per_pixel, roofline_ms and device_vs_roofline
-// (each null when not measured: `facet bench --no-roofline`, or no device time); for a method that estimates its error,
-// also error_spearman, error_mean_ratio, error_calibration (as facet compare); on a scene with a camera path, path:
-// {frames, rmse, flip (one per sampled frame), rmse_jump_ratio, flip_jump_ratio}. results.json adds `schema` to each
-// (report_files.hpp).
+// flip), image, heatmap, probe_fma_per_second, probe_texel_reads_per_second, work_fma_per_pixel, reads_per_pixel,
+// roofline_fma_ms, roofline_reads_ms, roofline_ms and device_vs_roofline (each null when not measured: `facet bench
+// --no-roofline`, or no device time); for a method that estimates its error, also error_spearman, error_mean_ratio,
+// error_calibration (as facet compare); on a scene with a camera path, path: {frames, rmse, flip (one per sampled
+// frame), rmse_jump_ratio, flip_jump_ratio}. results.json adds `schema` to each (report_files.hpp).
 nlohmann::json to_json(const BenchRecord& record);
 
 // A number, or null when unset: the optional figures of results.json and run.json.

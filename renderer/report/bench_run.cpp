@@ -104,6 +104,7 @@ BenchRecord measure_method(vk::Context& context, const Scene& scene, const Catal
       const int height = std::max(1, static_cast<int>(std::lround(double(reference.height) * width / reference.width)));
       const gpu::WorkCount work = gpu::count_work(context, scene, method.render_method(), width, height);
       record.probe_fma_per_second = probe->fma_per_second;
+      record.probe_texel_reads_per_second = probe->texel_reads_per_second;
       record.work_fma_per_pixel = work.fma_per_pixel;
       record.reads_per_pixel = work.reads_per_pixel;
     }

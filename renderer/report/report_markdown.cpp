@@ -29,8 +29,9 @@ void write_header(std::ostringstream& md, const BenchRun& run) {
         "precomputed tables, pipeline) plus the warm-up frame. Errors are against the reference, with the metrics of "
         "`facet compare` (docs/report.md). `work FMA/px` and `reads/px` are a method's float arithmetic "
         "(FMA-equivalents) and texel fetches per pixel, counted by its instrumented render pass; `roofline` is the "
-        "device time of a frame of that work at the probe's FMA peak, `device/roofline` the measured device time "
-        "over it (docs/report.md, the roofline).\n\n";
+        "device time of a frame of that work at the probe's peaks, the larger of its arithmetic at the FMA peak and "
+        "its fetches at the texel-read peak, `device/roofline` the measured device time over it (docs/report.md, the "
+        "roofline).\n\n";
 }
 
 void write_markdown_headline(std::ostringstream& md, const BenchRun& run) {

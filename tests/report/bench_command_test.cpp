@@ -224,8 +224,14 @@ TEST_F(Bench, RecordsTheProbeAndTheRoofline) {
   EXPECT_EQ(r["probe_fma_per_second"].get<double>(), peak);
   const double work = r["work_fma_per_pixel"].get<double>();
   EXPECT_GT(work, 0.0) << r.dump();
-  EXPECT_GT(r["reads_per_pixel"].get<double>(), 0.0) << r.dump();
-  const double roofline = 1e3 * 48.0 * 27.0 * work / peak;
+  const double reads = r["reads_per_pixel"].get<double>();
+  EXPECT_GT(reads, 0.0) << r.dump();
+  const double fetch_peak = run["probe"]["texel_reads_per_second"].get<double>();
+  EXPECT_EQ(r["probe_texel_reads_per_second"].get<double>(), fetch_peak);
+  const double arithmetic = 1e3 * 48.0 * 27.0 * work / peak, fetches = 1e3 * 48.0 * 27.0 * reads / fetch_peak;
+  EXPECT_NEAR(r["roofline_fma_ms"].get<double>(), arithmetic, 1e-9 * arithmetic);
+  EXPECT_NEAR(r["roofline_reads_ms"].get<double>(), fetches, 1e-9 * fetches);
+  const double roofline = std::max(arithmetic, fetches);
   EXPECT_NEAR(r["roofline_ms"].get<double>(), roofline, 1e-9 * roofline);
   const double ratio = r["gpu_ms"].get<double>() / roofline;
   EXPECT_NEAR(r["device_vs_roofline"].get<double>(), ratio, 1e-9 * ratio);

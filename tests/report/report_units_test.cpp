@@ -200,6 +200,30 @@ BenchRecord record(const std::string& scene, const std::string& method, double m
   return r;
 }
 
+// The roofline is the slower of a frame's arithmetic at the FMA peak and its fetches at the texel-read
+// peak, either alone where the other is not measured, nothing without both of a pair (hand-worked: 100 x 10
+// pixels of 50 FMAs at 1e9/s are 0.05 ms, of 4 fetches at 1e8/s 0.04 ms; of 8 fetches 0.08 ms).
+TEST(Roofline, IsTheSlowerOfArithmeticAndFetches) {
+  BenchRecord r = record("s", "m", 0.4, 0.0);
+  r.width = 100;
+  r.height = 10;
+  EXPECT_FALSE(r.roofline_ms());
+  r.work_fma_per_pixel = 50.0;
+  r.probe_fma_per_second = 1e9;
+  EXPECT_DOUBLE_EQ(*r.roofline_ms(), 0.05);
+  r.reads_per_pixel = 4.0;
+  EXPECT_DOUBLE_EQ(*r.roofline_ms(), 0.05);  // no fetch peak: the arithmetic alone
+  r.probe_texel_reads_per_second = 1e8;
+  EXPECT_DOUBLE_EQ(*r.roofline_reads_ms(), 0.04);
+  EXPECT_DOUBLE_EQ(*r.roofline_ms(), 0.05);
+  r.reads_per_pixel = 8.0;
+  EXPECT_DOUBLE_EQ(*r.roofline_ms(), 0.08);
+  EXPECT_DOUBLE_EQ(*r.device_vs_roofline(), 5.0);
+  r.probe_fma_per_second.reset();
+  EXPECT_FALSE(r.roofline_fma_ms());
+  EXPECT_DOUBLE_EQ(*r.roofline_ms(), 0.08);
+}
+
 // Scene a: colormip is faster and more accurate than filtered, so it wins (the headline once named
 // filtered). mip is more accurate still but ss:8 is as accurate and faster. Scene b: filtered beats
 // every ss:K. Scene c: only baselines, no line. Scene d: supersampling beats every candidate.
