@@ -63,22 +63,24 @@ bool computes_estimate(bool error_channel, bool adaptive, bool refining) {
   return error_channel || (adaptive && !refining);
 }
 
-// Whether a colour-mapped texture of the scene has a map of this interpolation.
-bool uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
-  for (const Material& m : scene.materials)
-    if (const auto* t = std::get_if<ColormapTextureMaterial>(&m); t && t->colormap.interpolation() == interpolation)
-      return true;
-  return false;
-}
-
-// The points of the scene's longest colour map of this interpolation on a colour-mapped texture, if every
-// such map has at most FACET_RENDER_WALKED_COLORMAP_POINTS, else 0 (also without any): the shader's walks
-// over a map's points are then unrolled to that many trips (render/texture_sampling.glsl).
-uint32_t unrolled_colormap_points(const Scene& scene, Colormap::Interpolation interpolation) {
+// The points of the scene's longest colour map of this interpolation on a colour-mapped texture (0: none).
+std::size_t longest_texture_colormap(const Scene& scene, Colormap::Interpolation interpolation) {
   std::size_t longest = 0;
   for (const Material& m : scene.materials)
     if (const auto* t = std::get_if<ColormapTextureMaterial>(&m); t && t->colormap.interpolation() == interpolation)
       longest = std::max(longest, t->colormap.positions().size());
+  return longest;
+}
+
+// Whether a colour-mapped texture of the scene has a map of this interpolation.
+uint32_t uses_colormaps(const Scene& scene, Colormap::Interpolation interpolation) {
+  return longest_texture_colormap(scene, interpolation) > 0 ? 1u : 0u;
+}
+
+// The longest such map's points if it has at most FACET_RENDER_WALKED_COLORMAP_POINTS, else 0 (also without
+// any): the shader's walks over a map's points are then unrolled to that many trips (render/texture_sampling.glsl).
+uint32_t unrolled_colormap_points(const Scene& scene, Colormap::Interpolation interpolation) {
+  const std::size_t longest = longest_texture_colormap(scene, interpolation);
   return longest <= FACET_RENDER_WALKED_COLORMAP_POINTS ? static_cast<uint32_t>(longest) : 0u;
 }
 
@@ -151,8 +153,8 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_PREINTEGRATED_SLICE_WORDS, diffraction.preintegrated_slices.slice_words},
       {FACET_RENDER_SPEC_AOVS, writes_aovs(method) ? 1u : 0u},
       {FACET_RENDER_SPEC_COUNTS_WORK, method.counts_work ? 1u : 0u},
-      {FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Linear) ? 1u : 0u},
-      {FACET_RENDER_SPEC_HAS_STEP_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Steps) ? 1u : 0u},
+      {FACET_RENDER_SPEC_HAS_LINEAR_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Linear)},
+      {FACET_RENDER_SPEC_HAS_STEP_COLORMAPS, uses_colormaps(scene, Colormap::Interpolation::Steps)},
       {FACET_RENDER_SPEC_WHOLE_MIP_TEXELS, mip_texels_are_whole(scene) ? 1u : 0u},
       // Some dispatch computes the estimate (a first pass, if any does); without, its code is left out of the
       // pipeline, for lavapipe would run it masked on every tap.
