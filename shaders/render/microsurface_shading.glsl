@@ -103,19 +103,15 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
   MicrosurfaceVisibility vis = microsurface_visibility(stats, v, l);
   vec3 slope_sum = vec3(0.0), slope_cos_sum = vec3(0.0);
   // Without a slope colour map only the smooth cosine is integrated: the 3 x 3 rule suffices there.
-  // Each of the two node sums is one loop, its second index counted within its first, not a loop in a
-  // loop: lavapipe pays a loop's control on every trip and an inner loop's entry and exit on every outer
-  // trip (docs/render_speed.md, "Loops on lavapipe"). The sums run in the nested loops' order.
+  // Each of the two node sums is one loop over its two indices (next_row_major), in the nested loops' order.
   int slope_nodes = microsurface_has_slope_map(m) ? MS_SLOPE_NODES : MS_SLOPE_NODES_COSINE;
-  int i = 0, j = 0;
+  ivec2 ij = ivec2(0);
   for (int node_index = 0; node_index < slope_nodes * slope_nodes; ++node_index) {
-    MicrosurfaceSlopeNode node = microsurface_slope_node(vis.ds, slope_nodes, i, j);
+    MicrosurfaceSlopeNode node = microsurface_slope_node(vis.ds, slope_nodes, ij.x, ij.y);
     vec3 a = node.weight * microsurface_slope_colour(m, node.s);
     slope_sum += a;
     slope_cos_sum += a * max(dot(microsurface_normal(node.s), l), 0.0);
-    bool row_done = j + 1 == slope_nodes;
-    j = row_done ? 0 : j + 1;
-    i = row_done ? i + 1 : i;
+    ij = next_row_major(ij, slope_nodes);
   }
   vec3 heights = vec3(1.0), heights_lit = vec3(vis.lit);
   if (microsurface_has_height_map(m)) {
@@ -126,8 +122,9 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
     // Node k of the visible heights, then, where the lit weights are not shared, of the visible and lit
     // ones: one call of the node and its colour (each call site is compiled on its own).
     int lit_count = lit_on_visible_nodes ? 1 : 2;
-    int k = 0, lit_nodes = 0;
+    ivec2 node_lit = ivec2(0);  // the node k, and whether its heights are the visible and lit ones
     for (int node_index = 0; node_index < MS_HEIGHT_NODES * lit_count; ++node_index) {
+      int k = node_lit.x, lit_nodes = node_lit.y;
       float lambda = lit_nodes == 0 ? vis.lambda_v : vis.lambda_v + vis.lambda_l;
       vec3 c = microsurface_height_colour(m, microsurface_height_node(k, stats.h_mean, stats.h_sigma, lambda));
       if (lit_nodes == 1)
@@ -136,9 +133,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
         heights += c;
         if (lit_on_visible_nodes) heights_lit += microsurface_lit_weight(k, a) * c;
       }
-      bool node_done = lit_nodes + 1 == lit_count;
-      lit_nodes = node_done ? 0 : lit_nodes + 1;
-      k = node_done ? k + 1 : k;
+      node_lit = next_row_major(node_lit, lit_count);
     }
     heights /= float(MS_HEIGHT_NODES);
     heights_lit *= vis.lit;

@@ -406,6 +406,13 @@ vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
   return sqrt(max(second, vec3(0.0)));
 }
 
+// One loop over rows of `row_length` cells in order, instead of a loop over rows around a loop over a row's
+// cells (lavapipe pays a loop's control on every trip for all lanes, and an inner loop's entry and exit on
+// every outer trip: docs/render_speed.md, "Loops on lavapipe"): the cell (row, column) after `cell`.
+ivec2 next_row_major(ivec2 cell, int row_length) {
+  return cell.y + 1 == row_length ? ivec2(cell.x + 1, 0) : ivec2(cell.x, cell.y + 1);
+}
+
 // Sub-footprints per pixel axis for `filtered`: the law of the texture values over the pixel is the
 // mixture of one Gaussian per tap of split x split sub-parallelograms that tile the pixel's
 // (docs/colormap_filtering.md, "Mixture of tap laws"); 3 lowers the error further at about twice the
@@ -449,14 +456,12 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   vec2 tap_major = major * size / along, tap_minor = minor * size / split;  // one tap's axes, in texels
   vec3 colour = vec3(0.0);
   MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
-  // One loop over the taps, row (j across) within column (k along), not a loop in a loop: lavapipe runs a
-  // loop's control for all its lanes on every trip, and an inner loop's entry and exit on every outer trip,
-  // which cost the noise plane's `filtered` a quarter of its device time (docs/render_speed.md, "Loops on
-  // lavapipe"). The sums run in the nested loops' order.
+  // One loop over the taps (k along, j across within it; next_row_major), not a loop in a loop, which cost
+  // the noise plane's `filtered` a quarter of its device time. The sums run in the nested loops' order.
   float count = along * split;
-  float k = 0.0, j = 0.0;
+  ivec2 kj = ivec2(0);
   for (float i = 0.0; i < count; i += 1.0) {
-    vec2 tap = uv + major * ((k + 0.5) / along - 0.5) + minor * ((j + 0.5) / split - 0.5);
+    vec2 tap = uv + major * ((float(kj.x) + 0.5) / along - 0.5) + minor * ((float(kj.y) + 0.5) / split - 0.5);
     if (kTextureMethod == 2u) {
       colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod).rgb;
     } else if (kTextureMethod == 1u) {
@@ -470,9 +475,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
       if (estimates) spread += colormap_spread(map, t.x, sigma, mean);
 #endif
     }
-    bool column_done = j + 1.0 == split;
-    j = column_done ? 0.0 : j + 1.0;
-    k = column_done ? k + 1.0 : k;
+    kj = next_row_major(kj, int(split));
   }
   vec3 albedo = colour / count;
   if (estimates) spread /= count;
