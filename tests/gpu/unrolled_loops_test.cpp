@@ -3,6 +3,7 @@
 // plane and sphere loops to the scene's counts. A trip past a shorter map's last point, or a search trip
 // after the segment is found, must add nothing; so a frame must not change when an unused material or
 // object raises the trip counts, or pushes them past the unrolled limit into a loop.
+#include <cmath>
 #include <string>
 #include <vector>
 
