@@ -18,10 +18,35 @@ layout(push_constant) uniform Push { GpuMipStep mip_step; };
 // Level-0 texels along one axis covered by child texel i (span level-0 texels each, `size` in all).
 uint coverage(uint i, uint span, uint size) { return min((i + 1u) * span, size) - i * span; }
 
+// A chain of pairs (mip_step.base.z = 1; MipLayout::Pairs in renderer/gpu/mip_builder.hpp) keeps two
+// channels per texel, each texel holding them for itself and for the next texel of its row (the first
+// after the last): (a_i, b_i, a_i+1, b_i+1). The children of parent column px are the pair at column 2 px,
+// whose second half is a child only where 2 px + 1 is inside the row. The sums run in the order of the
+// texels' (main), so a pair's channels equal those a chain of texels would hold.
+vec2 parent_of_pairs(uvec4 child, uint px, uint py) {
+  vec2 sum = vec2(0.0);
+  float total = 0.0;
+  for (uint cy = 2u * py; cy < min(2u * py + 2u, child.z); ++cy) {
+    vec4 pair = uintBitsToFloat(imageLoad(texels, int(child.x + cy * child.y + 2u * px)));
+    for (uint cx = 2u * px; cx < min(2u * px + 2u, child.y); ++cx) {
+      float weight = float(coverage(cx, child.w, mip_step.base.x) * coverage(cy, child.w, mip_step.base.y));
+      sum += weight * (cx == 2u * px ? pair.xy : pair.zw);
+      total += weight;
+    }
+  }
+  return sum / total;
+}
+
 void main() {
   uvec2 p = gl_GlobalInvocationID.xy;
   if (p.x >= mip_step.parent.y || p.y >= mip_step.parent.z) return;
   uvec4 child = mip_step.child;
+  int parent = int(mip_step.parent.x + p.y * mip_step.parent.y + p.x);
+  if (mip_step.base.z == 1u) {
+    uint next = p.x + 1u == mip_step.parent.y ? 0u : p.x + 1u;
+    imageStore(texels, parent, floatBitsToUint(vec4(parent_of_pairs(child, p.x, p.y), parent_of_pairs(child, next, p.y))));
+    return;
+  }
   vec4 sum = vec4(0.0);
   float total = 0.0;
   for (uint cy = 2u * p.y; cy < min(2u * p.y + 2u, child.z); ++cy)
@@ -30,5 +55,5 @@ void main() {
       sum += weight * uintBitsToFloat(imageLoad(texels, int(child.x + cy * child.y + cx)));
       total += weight;
     }
-  imageStore(texels, int(mip_step.parent.x + p.y * mip_step.parent.y + p.x), floatBitsToUint(sum / total));
+  imageStore(texels, parent, floatBitsToUint(sum / total));
 }

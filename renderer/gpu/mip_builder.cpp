@@ -31,11 +31,12 @@ MipBuilder::MipBuilder(vk::Context& context)
                         .specialization = {},
                         .buffer_kinds = {vk::BufferKind::StorageTexels}}) {}
 
-double MipBuilder::build(const vk::Buffer& texels, std::span<const GpuTextureLevel> chain) {
+double MipBuilder::build(const vk::Buffer& texels, std::span<const GpuTextureLevel> chain, MipLayout layout) {
   std::array<const vk::Buffer*, FACET_MIP_BINDING_COUNT> bindings{};
   bindings[FACET_MIP_BINDING_TEXELS] = &texels;
   double gpu_ms = 0.0;
-  const uvec4 base = chain.empty() ? uvec4(0) : uvec4(chain[0].info.y, chain[0].info.z, 0, 0);
+  const uvec4 base =
+      chain.empty() ? uvec4(0) : uvec4(chain[0].info.y, chain[0].info.z, layout == MipLayout::Pairs ? 1u : 0u, 0);
   for (size_t l = 0; l + 1 < chain.size(); ++l) {
     const uvec4 child = chain[l].info, parent = chain[l + 1].info;
     const GpuMipStep step{uvec4(child.x, child.y, child.z, 1u << l), uvec4(parent.x, parent.y, parent.z, 0), base};

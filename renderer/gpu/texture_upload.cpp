@@ -16,7 +16,7 @@ std::size_t mip_chain_texels(int width, int height) {
   return texels;
 }
 
-uint append_mip_chain(TextureData& data, int width, int height) {
+uint append_mip_chain(TextureData& data, int width, int height, MipLayout layout) {
   const uint first = static_cast<uint>(data.levels.size());
   const std::vector<glm::uvec2> sizes = mip_chain_sizes(width, height);
   for (uint l = 0; l < sizes.size(); ++l) {
@@ -24,7 +24,7 @@ uint append_mip_chain(TextureData& data, int width, int height) {
     data.levels.push_back({uvec4(data.texels.size(), size.x, size.y, l)});
     data.texels.grow(static_cast<std::size_t>(size.x) * size.y);  // level 0 for the caller, the rest for the GPU
   }
-  data.gpu_chains.emplace_back(first, sizes.size());
+  data.gpu_chains.push_back({first, static_cast<uint>(sizes.size()), layout});
   return first;
 }
 
@@ -37,8 +37,9 @@ double build_gpu_mips(vk::Context& context, const vk::Buffer& texels, const Text
   if (data.gpu_chains.empty()) return 0.0;
   MipBuilder builder(context);
   double gpu_ms = 0.0;
-  for (const glm::uvec2 chain : data.gpu_chains)
-    gpu_ms += builder.build(texels, std::span<const GpuTextureLevel>(data.levels).subspan(chain.x, chain.y));
+  for (const GpuMipChain& chain : data.gpu_chains)
+    gpu_ms += builder.build(texels, std::span<const GpuTextureLevel>(data.levels).subspan(chain.first, chain.levels),
+                            chain.layout);
   return gpu_ms;
 }
 
@@ -69,21 +70,28 @@ GpuColormap append_colormap_points(TextureData& data, const Colormap& map) {
 
 uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material, bool with_table) {
   const assets::ScalarField& field = *material.texture;
-  // Level 0 of each chain is written in place: (E[t], E[t^2], within-texel variance, 0) and the
-  // colour-mapped texel (rgb, 0), in float.
-  const uint first_moment = append_mip_chain(data, field.width, field.height);
+  // Level 0 of each chain is written in place: the pairs (E[t], E[t^2] + within-texel variance) of a
+  // texel and of its right neighbour, and the colour-mapped texel (rgb, 0), in float.
+  const uint first_moment = append_mip_chain(data, field.width, field.height, MipLayout::Pairs);
   const uint moment_levels = static_cast<uint>(data.levels.size()) - first_moment;
   const uint first_colour = append_mip_chain(data, field.width, field.height);
   const std::span<vec4> moment_texels = level_texels(data, first_moment), colour_texels = level_texels(data, first_colour);
   static_assert(precompute::kScalarChannels == 3);
   // Rows in parallel: 16 bilinear samples per texel for the within-texel variance.
   tbb::parallel_for(0, field.height, [&](int y) {
+    const std::size_t row = static_cast<std::size_t>(y) * field.width;
+    glm::vec2 first{}, previous{};  // each texel is written once its right neighbour is known
     for (int x = 0; x < field.width; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * field.width + x;
       const std::array<double, 3> m = precompute::scalar_moment_texel(field, x, y);
-      moment_texels[i] = vec4(glm::vec3(glm::dvec3(m[0], m[1], m[2])), 0.0f);
-      colour_texels[i] = vec4(glm::vec3(material.colormap.at(field.values[i])), 0.0f);
+      const glm::vec2 pair(glm::dvec2(m[0], m[1] + m[2]));
+      if (x == 0)
+        first = pair;
+      else
+        moment_texels[row + x - 1] = vec4(previous, pair);
+      previous = pair;
+      colour_texels[row + x] = vec4(glm::vec3(material.colormap.at(field.values[row + x])), 0.0f);
     }
+    moment_texels[row + field.width - 1] = vec4(previous, first);
   });
 
   const Colormap& map = material.colormap;

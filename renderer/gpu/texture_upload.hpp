@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "gpu/mip_builder.hpp"
 #include "gpu/scene_layout.hpp"
 #include "gpu/texel_store.hpp"
 #include "precompute/prefiltered_colormap.hpp"
@@ -17,22 +18,29 @@
 
 namespace facet::gpu {
 
+// A chain for build_gpu_mips to fill: its first level record, its level count and how it keeps its texels.
+struct GpuMipChain {
+  uint first = 0;
+  uint levels = 0;
+  MipLayout layout = MipLayout::Texels;
+};
+
 struct TextureData {
   std::vector<GpuTextureLevel> levels;
   TexelStore texels;
   std::vector<GpuColormap> colormaps;
   std::vector<vec4> colormap_points;   // linear rgb, position
-  std::vector<glm::uvec2> gpu_chains;  // first level record, level count: filled by build_gpu_mips
+  std::vector<GpuMipChain> gpu_chains;  // filled by build_gpu_mips
 };
 
 // The texels of a MIP chain over width x height: its levels' (mip_chain_sizes) in all.
 std::size_t mip_chain_texels(int width, int height);
 
-// Appends a MIP chain of vec4 texels: room for level 0 (width * height texels, row-major, for the
-// caller to fill through level_texels) and the coarser levels (mip_chain_sizes), which build_gpu_mips
-// box-filters. Level records hold (offset, width, height, index in the chain), as texel_quad
-// (render/texture_sampling.glsl) reads them. Returns the index of its first level record.
-uint append_mip_chain(TextureData& data, int width, int height);
+// Appends a MIP chain of vec4 texels laid out as `layout`: room for level 0 (width * height texels,
+// row-major, for the caller to fill through level_texels) and the coarser levels (mip_chain_sizes),
+// which build_gpu_mips box-filters. Level records hold (offset, width, height, index in the chain), as
+// texel_quad (render/texture_sampling.glsl) reads them. Returns the index of its first level record.
+uint append_mip_chain(TextureData& data, int width, int height, MipLayout layout = MipLayout::Texels);
 
 // The texels of level record `level` (width * height of them, row-major).
 std::span<vec4> level_texels(TextureData& data, uint level);
@@ -58,7 +66,9 @@ GpuColormap append_colormap_points(TextureData& data, const Colormap& map);
 
 // Appends the MIP chains of `material` and its colour map (with its prefiltered table when
 // `with_table`); returns the GpuMaterial::texture field (first moment level, level count, first
-// colour-MIP level, colour map index).
+// colour-MIP level, colour map index). The moments are a chain of pairs (MipLayout::Pairs) of
+// (E[t], E[t^2] + within-texel variance): the two a lookup needs (docs/colormap_filtering.md,
+// "Footprint variance"), each a box mean over the covered level-0 texels.
 uvec4 add_colormap_texture(TextureData& data, const ColormapTextureMaterial& material, bool with_table = false);
 
 // The texels add_colormap_texture appends without a table (the two chains), so that the upload can

@@ -8,7 +8,7 @@
 struct GpuMipStep {
   uvec4 child;   // offset, width, height, span: level-0 texels per child texel side (2^level)
   uvec4 parent;  // offset, width, height, -
-  uvec4 base;    // level-0 width, height, -, -
+  uvec4 base;    // level-0 width, height, layout (0: texels, 1: pairs; gpu::MipLayout), -
 };
 
 #define FACET_MIP_WORKGROUP 8

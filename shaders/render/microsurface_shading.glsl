@@ -54,9 +54,9 @@ MicrosurfaceMoments microsurface_tap_moments(GpuMaterial m, vec2 q, vec2 size, f
   vec2 uv = q / size;
   // mip and colormip use the means only: the second-moment chain is read by filtered alone, which only
   // the program that traces height fields runs on microsurfaces.
-  MicrosurfaceMoments chain = MicrosurfaceMoments(sample_trilinear(first, count, uv, lod), vec4(0.0));
+  MicrosurfaceMoments chain = MicrosurfaceMoments(sample_trilinear(first, count, uv, lod, false), vec4(0.0));
 #ifdef FACET_HEIGHT_FIELDS
-  if (kTextureMethod >= 3u) chain.m1 = sample_trilinear(first + count, count, uv, lod);
+  if (kTextureMethod >= 3u) chain.m1 = sample_trilinear(first + count, count, uv, lod, false);
 #endif
   if (point_weight <= 0.0) return chain;
   MicrosurfaceMoments point = microsurface_point_moments(heightfield_point(heightfield_quads(m), q, m.albedo.w));
@@ -175,7 +175,7 @@ MicrosurfaceFootprint microsurface_footprint(GpuMaterial m, GpuPlane plane, vec3
 MicrosurfaceFootprint microsurface_footprint_on_surface(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p,
                                                         vec3 d_dx, vec3 d_dy, MicrosurfaceFootprint flat_fp) {
   float lod = anisotropic_footprint(flat_fp.duv_dx, flat_fp.duv_dy, flat_fp.size, float(m.texture.y), kMaxAnisotropicTaps).lod;
-  vec2 s = sample_trilinear(m.texture.x + 1u, m.texture.y, flat_fp.q / flat_fp.size, lod).zw;
+  vec2 s = sample_trilinear(m.texture.x + 1u, m.texture.y, flat_fp.q / flat_fp.size, lod, false).zw;
   vec3 t = plane.tangent.xyz, n = plane.normal.xyz;
   MicrosurfaceFootprint fp = microsurface_footprint(m, plane, o, d, p, d_dx, d_dy, normalize(n - s.x * t - s.y * cross(n, t)));
   if (length(fp.duv_dx) > length(flat_fp.duv_dx)) fp.duv_dx = flat_fp.duv_dx;
@@ -232,7 +232,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
     sum.m1 += tm.m1;
 #ifndef FACET_HEIGHT_FIELDS  // colormip shades the flat rectangle only
     if (kTextureMethod == 2u) {
-      vec3 chain = sample_trilinear(m.texture.x + 1u + 2u * m.texture.y, m.texture.y, tap / size, f.lod).rgb;
+      vec3 chain = sample_trilinear(m.texture.x + 1u + 2u * m.texture.y, m.texture.y, tap / size, f.lod, false).rgb;
       if (point_weight > 0.0) {
         vec3 point = heightfield_point(heightfield_quads(m), tap, delta);
         chain = mix(chain, microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz), point_weight);

@@ -15,7 +15,9 @@ const float kMaxAnisotropicTaps = 8.0;
 
 // The four texels around uv at `level` and the bilinear weights of the right (x) and upper (y)
 // ones. Texel centres as lib/mip_grid.glsl places them (exact for odd sizes); info.w is the level's
-// index in its chain (0 for a lone level), whose level 0 is the record `level - info.w`.
+// index in its chain (0 for a lone level), whose level 0 is the record `level - info.w`. A chain of
+// pairs (gpu::MipLayout::Pairs: the colour-mapped textures' moments) gives each texel's two channels
+// as x and y, z = w = 0.
 struct TexelQuad {
   vec4 t00;
   vec4 t10;
@@ -38,12 +40,18 @@ TextureLevel texture_level(uint level) {
 
 // Where every chain of the scene has whole texels on every level (kWholeMipTexels: power-of-two sizes),
 // the shortcut gives the same taps for a third of the arithmetic (lib/mip_grid.glsl).
-TexelQuad texel_quad(TextureLevel level, vec2 uv) {
+TexelQuad texel_quad(TextureLevel level, vec2 uv, bool pairs) {
   uvec4 info = level.info;
   int span = 1 << info.w;
   MipAxisTaps x = kWholeMipTexels ? mip_axis_taps_whole(uv.x, int(info.y)) : mip_axis_taps(uv.x, int(level.size0.x), span, int(info.y));
   MipAxisTaps y = kWholeMipTexels ? mip_axis_taps_whole(uv.y, int(info.z)) : mip_axis_taps(uv.y, int(level.size0.y), span, int(info.z));
   uint row0 = info.x + uint(y.i0) * info.y, row1 = info.x + uint(y.i1) * info.y;
+  if (pairs) {
+    // texel i1 is the one after i0 in its row, the first after the last: the second half of i0's pair
+    vec4 low = texel_at(row0 + uint(x.i0)), high = texel_at(row1 + uint(x.i0));
+    return TexelQuad(vec4(low.xy, 0.0, 0.0), vec4(low.zw, 0.0, 0.0), vec4(high.xy, 0.0, 0.0), vec4(high.zw, 0.0, 0.0),
+                     vec2(x.w1, y.w1));
+  }
   return TexelQuad(texel_at(row0 + uint(x.i0)), texel_at(row0 + uint(x.i1)), texel_at(row1 + uint(x.i0)),
                    texel_at(row1 + uint(x.i1)), vec2(x.w1, y.w1));
 }
@@ -51,19 +59,19 @@ TexelQuad texel_quad(TextureLevel level, vec2 uv) {
 vec4 bilinear(TexelQuad q) { return mix(mix(q.t00, q.t10, q.f.x), mix(q.t01, q.t11, q.f.x), q.f.y); }
 
 // Bilinear between texel centres, periodic (at level 0 as renderer/cpu/material_shading.cpp).
-vec4 sample_level(uint level, vec2 uv) { return bilinear(texel_quad(texture_level(level), uv)); }
+vec4 sample_level(uint level, vec2 uv, bool pairs) { return bilinear(texel_quad(texture_level(level), uv, pairs)); }
 
 // Both levels through one call of sample_level in the source (lavapipe compiles each call site of an
 // inlined function on its own, and trilinear lookups are made at many sites), in two unrolled trips: a
 // loop of one or two trips inside the taps' loop cost lavapipe more than a second lookup of the finest
 // level where nothing blends (the chain's coarsest level; docs/render_speed.md, "Loops on lavapipe").
-vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod) {
+vec4 sample_trilinear(uint first, uint count, vec2 uv, float lod, bool pairs) {
   float l0 = floor(lod);
   uint level = first + uint(l0);
   bool blends = l0 + 1.0 < float(count);
   vec4 fine = vec4(0.0), coarse = vec4(0.0);
   [[unroll]] for (uint i = 0u; i < 2u; ++i) {
-    vec4 s = sample_level(level + (blends ? i : 0u), uv);
+    vec4 s = sample_level(level + (blends ? i : 0u), uv, pairs);
     if (i == 0u) fine = s; else coarse = s;
   }
   return blends ? mix(fine, coarse, lod - l0) : fine;
@@ -303,24 +311,23 @@ MomentLevels moment_levels(uint first, uint count, float lod) {
 
 // (E[t], E[t^2]) of the texture over one tap (axes axis_a, axis_b in level-0 texels) at `levels`
 // (docs/colormap_filtering.md, "Footprint variance"). Level l >= 1: the box-filtered sample moments
-// plus the mean within-texel variance (channel z). Level 0 stands for taps up to 2 texels wide: the
+// plus the mean within-texel variance (the pairs' channel y). Level 0 stands for taps up to 2 texels wide: the
 // bilinear texture there is linearised at the tap (lib/texture_footprint.glsl), so the variance
 // vanishes with the tap and `filtered` tends to `naive` under magnification.
 vec2 footprint_moments(MomentLevels levels, vec2 uv, vec2 axis_a, vec2 axis_b) {
   // One quad of texels serves both cases: lavapipe runs both sides of a branch, so a lookup per
   // side would cost two.
-  TexelQuad q = texel_quad(levels.fine, uv);
+  TexelQuad q = texel_quad(levels.fine, uv, true);
   vec4 s = bilinear(q);
   vec2 a;
   if (levels.level0) {
     vec2 gradient = vec2(mix(q.t10.x - q.t00.x, q.t11.x - q.t01.x, q.f.y), mix(q.t01.x - q.t00.x, q.t11.x - q.t10.x, q.f.x));
     a = vec2(s.x, s.x * s.x + linearised_tap_variance(gradient, axis_a, axis_b));
   } else {
-    a = vec2(s.x, s.y + s.z);
+    a = s.xy;
   }
   if (levels.blend == 0.0) return a;
-  vec4 b = bilinear(texel_quad(levels.coarse, uv));
-  return mix(a, vec2(b.x, b.y + b.z), levels.blend);
+  return mix(a, bilinear(texel_quad(levels.coarse, uv, true)).xy, levels.blend);
 }
 
 // The spread of the mapped colour under t ~ N(mu, sigma^2): sqrt(E[(colormap(t) - mean)^2]) per channel
@@ -433,7 +440,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   // dispatch (GpuTile::list.y: the spread's loops then run one masked trip per tap).
   bool estimates = kEstimatesError && kTextureMethod == 3u && tile.list.y == 0u;
   GpuColormap map = colormap_record(m.texture.w);
-  if (kTextureMethod == 0u) return colormap_at(map, sample_level(m.texture.x, uv).x);
+  if (kTextureMethod == 0u) return colormap_at(map, sample_level(m.texture.x, uv, true).x);
   uvec4 level0 = texture_level_at(m.texture.x).info;
   vec2 size = vec2(level0.yz);
   AnisotropicFootprint f = anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kMaxAnisotropicTaps);
@@ -463,9 +470,9 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   for (float i = 0.0; i < count; i += 1.0) {
     vec2 tap = uv + major * ((float(kj.x) + 0.5) / along - 0.5) + minor * ((float(kj.y) + 0.5) / split - 0.5);
     if (kTextureMethod == 2u) {
-      colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod).rgb;
+      colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod, false).rgb;
     } else if (kTextureMethod == 1u) {
-      colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod).x);
+      colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod, true).x);
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
     } else {
       vec2 t = footprint_moments(levels, tap, tap_major, tap_minor);

@@ -30,6 +30,9 @@ TEST(MipBuilder, ChainSizesHalveRoundingUpDownToOneTexel) {
 // Every level of every chain equals the double CPU chain. Float tolerance: each level is a weighted
 // mean of at most 4 children (weights exact integers), so its relative rounding grows by at most
 // ~4 eps_f per level (a sum of 4 terms, one division); |values| <= 1, so |gpu - cpu| <= 4 eps_f (l + 1) + eps_f.
+// Beside each chain of texels, a chain of pairs of its first two channels (MipLayout::Pairs) holds in
+// every texel (x, y) the chain of texels' (x, y) and ((x + 1) mod width, y), bit for bit: the same sums in
+// the same order.
 TEST(MipBuilder, GpuChainsEqualTheCpuChains) {
   auto context = test::make_validated_context();
   const Size sizes[] = {{64, 64}, {13, 7}, {1, 5}, {5, 1}, {1, 1}, {3, 40}, {37, 23}};
@@ -37,7 +40,7 @@ TEST(MipBuilder, GpuChainsEqualTheCpuChains) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   gpu::TextureData data;
   std::vector<precompute::MomentMips> cpu;
-  std::vector<gpu::uint> firsts;
+  std::vector<gpu::uint> firsts, pair_firsts;
   for (const Size s : sizes) {
     std::vector<double> level0(static_cast<size_t>(s.width) * s.height * 4);
     for (double& v : level0) v = unit(rng);
@@ -46,6 +49,13 @@ TEST(MipBuilder, GpuChainsEqualTheCpuChains) {
       texels[i] = gpu::vec4(level0[4 * i], level0[4 * i + 1], level0[4 * i + 2], level0[4 * i + 3]);
     firsts.push_back(gpu::append_mip_chain(data, s.width, s.height));
     std::ranges::copy(texels, gpu::level_texels(data, firsts.back()).begin());
+    pair_firsts.push_back(gpu::append_mip_chain(data, s.width, s.height, gpu::MipLayout::Pairs));
+    const std::span<gpu::vec4> pairs = gpu::level_texels(data, pair_firsts.back());
+    for (int y = 0; y < s.height; ++y)
+      for (int x = 0; x < s.width; ++x) {
+        const size_t row = static_cast<size_t>(y) * s.width;
+        pairs[row + x] = gpu::vec4(glm::vec2(texels[row + x]), glm::vec2(texels[row + (x + 1) % s.width]));
+      }
     cpu.push_back(precompute::build_moment_mips(s.width, s.height, 4, std::move(level0)));
   }
   vk::Buffer buffer = vk::Buffer::from(*context, std::span<const gpu::vec4>(data.texels));
@@ -56,7 +66,8 @@ TEST(MipBuilder, GpuChainsEqualTheCpuChains) {
   const double eps_f = std::ldexp(1.0, -24);
   double worst_ratio = 0.0;
   for (size_t c = 0; c < cpu.size(); ++c) {
-    ASSERT_EQ(data.gpu_chains[c].y, cpu[c].levels.size());
+    ASSERT_EQ(data.gpu_chains[2 * c].levels, cpu[c].levels.size());
+    ASSERT_EQ(data.gpu_chains[2 * c + 1].layout, gpu::MipLayout::Pairs);
     for (size_t l = 0; l < cpu[c].levels.size(); ++l) {
       const gpu::GpuTextureLevel& level = data.levels[firsts[c] + l];
       ASSERT_EQ(level.info.y, static_cast<gpu::uint>(cpu[c].levels[l].width));
@@ -72,6 +83,11 @@ TEST(MipBuilder, GpuChainsEqualTheCpuChains) {
             ASSERT_LE(error, tolerance) << sizes[c].width << "x" << sizes[c].height << " level " << l << " (" << x
                                         << ", " << y << ") channel " << k;
           }
+          const size_t row = static_cast<size_t>(y) * level.info.y;
+          const gpu::vec4 next = result[level.info.x + row + (x + 1) % level.info.y];
+          const gpu::vec4 pair = result[data.levels[pair_firsts[c] + l].info.x + row + x];
+          ASSERT_EQ(pair, gpu::vec4(got.x, got.y, next.x, next.y))
+              << sizes[c].width << "x" << sizes[c].height << " level " << l << " (" << x << ", " << y << ")";
         }
     }
   }
@@ -101,7 +117,7 @@ TEST(MipBuilder, ChainsBeyondTheStorageBufferRangeBuild) {
   buffer.download(result.data(), result.size() * sizeof(gpu::vec4));
 
   const double eps_f = std::ldexp(1.0, -24);
-  for (gpu::uint l = 1; l < data.gpu_chains[0].y; ++l) {
+  for (gpu::uint l = 1; l < data.gpu_chains[0].levels; ++l) {
     const gpu::GpuTextureLevel& level = data.levels[first + l];
     const int span = 1 << l;
     const double tolerance = 4 * eps_f * static_cast<double>(l + 1) + eps_f;
