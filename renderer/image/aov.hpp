@@ -38,6 +38,7 @@ struct AovPixel {
   glm::vec2 uv{0.0f};
   float error = 0.0f;
   bool texture_term = false;  // some stratum's hit has a texture term in `error` (docs/error_estimate.md)
+  float lit = 1.0f;           // the fraction of the hits whose shadow ray reached the light
 };
 
 // Appends the channels of `aovs` to image.channels, zero-filled; returns the index of the first.

@@ -39,15 +39,18 @@ bool jumps(const Image& image, const Step& step, float size, Distance distance) 
   return jump > kJumpRatio * beside && jump > kJumpFloor * size;
 }
 
-// Whether pixels p and q show different surfaces: one's samples hit where the other's miss, their
-// normals turn by more than ~25 degrees, or their uv or camera-space 1/depth jump (a silhouette in front
-// of a surface of nearly the same orientation, a uv seam: the colour changes across either within the
-// pixel). Depth is compared through its inverse and against the steps beside it: a plane receding to
-// the horizon has rows whose depths differ by any ratio without an edge between them.
-bool across_edge(const Image& image, const std::vector<AovPixel>& pixels, const Step& step) {
+// Whether an edge lies between pixels p and q: one's samples hit where the other's miss, their normals
+// turn by more than ~25 degrees, or their uv or camera-space 1/depth jump (a silhouette in front of a
+// surface of nearly the same orientation, a uv seam: the colour changes across either within the
+// pixel), or a shadow's edge: the light reached different fractions of their hits (a stratum's shadow
+// ray is all or nothing, so one stratum's worth is a difference, `stratum` = 1/K^2). Depth is compared
+// through its inverse and against the steps beside it: a plane receding to the horizon has rows whose
+// depths differ by any ratio without an edge between them.
+bool across_edge(const Image& image, const std::vector<AovPixel>& pixels, const Step& step, float stratum) {
   const std::size_t p = step.p, q = step.q;
   if (image.alpha[p] != image.alpha[q]) return true;
   if (image.alpha[p] <= 0.0f) return false;
+  if (std::abs(pixels[p].lit - pixels[q].lit) > 0.5f * stratum) return true;
   if (glm::dot(pixels[p].normal, pixels[q].normal) < 0.9f) return true;
   const auto uv_step = [&](std::size_t a, std::size_t b) { return glm::distance(pixels[a].uv, pixels[b].uv); };
   const auto inverse_depth_step = [&](std::size_t a, std::size_t b) {
@@ -67,6 +70,7 @@ float mean_abs_difference(glm::vec3 a, glm::vec3 b) {
 std::vector<float> edge_error(const Image& image, const std::vector<AovPixel>& pixels, int samples_per_axis) {
   std::vector<float> edge(pixels.size(), 0.0f);
   const float scale = 0.25f / static_cast<float>(samples_per_axis);  // eq. 3
+  const float stratum = 1.0f / static_cast<float>(samples_per_axis * samples_per_axis);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const std::size_t p = image.index(x, y);
@@ -84,7 +88,7 @@ std::vector<float> edge_error(const Image& image, const std::vector<AovPixel>& p
         const std::optional<std::size_t> q = pixel(1);
         if (!q) continue;
         const Step step{p, *q, pixel(-1), pixel(2)};
-        if (across_edge(image, pixels, step) || (unestimated && image.alpha[*q] > 0.0f))
+        if (across_edge(image, pixels, step, stratum) || (unestimated && image.alpha[*q] > 0.0f))
           edge[p] = std::max(edge[p], scale * mean_abs_difference(image.at(p), image.at(*q)));
       }
     }

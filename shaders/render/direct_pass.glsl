@@ -89,9 +89,11 @@ const bool kTracesHeightFields = false;
 
 // This invocation's auxiliary outputs (kWritesAovs), set by radiance() and shade(): camera-space z and
 // the shading normal (0 on a miss); uv, the texture's error estimate (docs/error_estimate.md) and 1 where
-// a texture term models the hit.
+// a texture term models the hit; whether the hit's shadow ray reached the light (1 where none was cast,
+// 0 on a miss), where a shadow's edge lies between neighbours (eq. 3).
 vec4 aov_depth_normal = vec4(0.0);
 vec4 aov_uv_error = vec4(0.0);
+vec4 aov_lit = vec4(0.0);
 // This invocation's work so far (kCountsWork): renderer/gpu/work_counter.hpp finds them by name.
 uint facet_work_fma = 0u;
 uint facet_work_reads = 0u;
@@ -154,6 +156,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
     vec3 origin = p + from_n * (offset * max(1.0, length(p)));
     if (lit && occluded(origin, l, from, from_n, kTracesHeightFields, field_skip)) visibility[k] = 0.0;
   }
+  if (kWritesAovs) aov_lit.x = visibility.x;
 #ifdef FACET_HEIGHT_FIELDS
   if (field_hit) return microsurface_field_radiance(m, hit, field, d, n, l, visibility);
 #endif
@@ -262,6 +265,7 @@ void main() {
     uint n = tile.rect.z * tile.rect.w;  // a list's length for a list (rect = (0, 0, n, 1))
     pixels[n + i] = adds ? pixels[n + i] + aov_depth_normal : aov_depth_normal;
     pixels[2u * n + i] = adds ? pixels[2u * n + i] + aov_uv_error : aov_uv_error;
+    pixels[3u * n + i] = adds ? pixels[3u * n + i] + aov_lit : aov_lit;
   }
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "common/error.hpp"
 #include "cpu/reference_renderer.hpp"
@@ -57,6 +58,53 @@ std::vector<float> error_channel(const Image& image) {
 float max_abs_difference(const Image& a, const Image& b, std::size_t pixel) {
   const glm::vec3 d = glm::abs(a.at(pixel) - b.at(pixel));
   return std::max({d.x, d.y, d.z, std::abs(a.alpha[pixel] - b.alpha[pixel])});
+}
+
+// A sphere's shadow on a textured plane whose colour map is one colour, so that the texture term reads 0
+// and the estimate is its edge term alone (eq. 3), seen from above: the plane, the sphere beside its shadow.
+Scene shadow_scene() {
+  const nlohmann::json document = nlohmann::json::parse(R"({
+    "camera": {"position": [0, 6, 0.01], "target": [0, 0, 0], "up": [0, 0, -1], "fov_y": 60, "width": 64, "height": 36},
+    "light": {"direction": [1, 1.5, 0.3], "irradiance": [3, 3, 3]},
+    "ambient": [0.2, 0.2, 0.2],
+    "materials": {
+      "grey": {"type": "colormap_texture", "texture": {"noise": {"width": 32, "height": 32, "octaves": 3, "base_frequency": 4, "seed": 5}},
+               "colormap": {"points": [[0, [0.6, 0.6, 0.6]], [1, [0.6, 0.6, 0.6]]]}},
+      "clay": {"type": "lambert", "albedo": [0.8, 0.35, 0.25]}},
+    "objects": [
+      {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "grey"},
+      {"type": "sphere", "center": [0.6, 1.0, 0], "radius": 0.5, "material": "clay"}]})");
+  return parse_scene(document, std::string(FACET_SOURCE_DIR) + "/scenes/shadow.json");
+}
+
+// A shadow's edge on a textured surface is an edge of the estimate (eq. 3: the pass writes whether each
+// hit's shadow ray reached the light): on the plane, away from the sphere's silhouette, exactly the pixels
+// beside a shadow's edge (a 4-neighbour of another brightness: the plane is one colour) read an error.
+TEST(AdaptiveRefinement, ShadowEdgesOfTexturedSurfacesAreEstimated) {
+  auto context = test::make_validated_context();
+  const Scene scene = shadow_scene();
+  const Image image = render(*context, scene, method("filtered", {}, true));
+  const std::vector<float> error = error_channel(image);
+  const auto plane = [&](int x, int y) {  // the plane's pixels are a little above 0.2 in brightness, the sphere's red
+    const glm::vec3 c = image.at(image.index(x, y));
+    return std::abs(c.r - c.b) < 1e-3f;
+  };
+  int edges = 0;
+  for (int y = 1; y + 1 < kHeight; ++y)
+    for (int x = 1; x + 1 < kWidth; ++x) {
+      const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+      bool inside = plane(x, y), shadow_edge = false;
+      for (const auto& [nx, ny] : neighbours) {
+        inside = inside && plane(nx, ny);
+        shadow_edge = shadow_edge || std::abs(image.at(image.index(nx, ny)).r - image.at(image.index(x, y)).r) > 0.1f;
+      }
+      if (!inside) continue;
+      const float e = error[image.index(x, y)];
+      EXPECT_EQ(e > 0.0f, shadow_edge) << "(" << x << ", " << y << ") error " << e;
+      edges += shadow_edge ? 1 : 0;
+    }
+  EXPECT_GT(edges, 10);
+  EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
 // filtered:adaptive[:K]: K = 8 unless given, in [2, 16]; the name survives a round trip.

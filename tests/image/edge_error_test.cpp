@@ -1,5 +1,6 @@
 // The edge term of the error estimate (docs/error_estimate.md, eqs. 3 and 3'), on images built by hand
-// whose colour steps give the expected terms directly: a quarter of the step over K.
+// whose colour steps give the expected terms directly: a quarter of the step over K. Edges of coverage,
+// normals, uv, depth and shadows.
 #include "image/edge_error.hpp"
 
 #include <gtest/gtest.h>
@@ -98,6 +99,28 @@ TEST(EdgeError, APlaneRecedingInPerspectiveHasNoEdge) {
   }
   const CoveredStrip s(u, depth);
   for (float e : edge_error(s.image, s.pixels, 1)) EXPECT_EQ(e, 0.0f);
+}
+
+TEST(EdgeError, ShadowEdgesAreEdges) {
+  // One flat textured surface (uv and depth continuous), its colours stepping by 0.1 but 0.5 between
+  // pixels 2 and 3, where a shadow's edge lies when the light reaches different fractions of their hits.
+  // With one ray per pixel: lit, lit, lit, shadowed, ... gives pixels 2 and 3 a quarter of the step; with
+  // 2 x 2 strata, one stratum's difference (0.75 against 0.5) is an edge too, and equal fractions none.
+  const float u[6] = {0.10f, 0.11f, 0.12f, 0.13f, 0.14f, 0.15f};
+  const float depth[6] = {2.0f, 2.0f, 2.0f, 2.0f, 2.0f, 2.0f};
+  CoveredStrip s(u, depth);
+  for (const float lit_far_side : {0.0f, 1.0f}) {
+    for (int i = 3; i < 6; ++i) s.pixels[i].lit = lit_far_side;
+    const std::vector<float> e = edge_error(s.image, s.pixels, 1);
+    for (int i : {0, 1, 4, 5}) EXPECT_EQ(e[i], 0.0f) << i;
+    EXPECT_FLOAT_EQ(e[2], lit_far_side == 0.0f ? 0.25f * 0.5f : 0.0f);
+    EXPECT_FLOAT_EQ(e[3], lit_far_side == 0.0f ? 0.25f * 0.5f : 0.0f);
+  }
+  for (int i = 0; i < 6; ++i) s.pixels[i].lit = i < 3 ? 0.75f : 0.5f;
+  const std::vector<float> k2 = edge_error(s.image, s.pixels, 2);
+  EXPECT_FLOAT_EQ(k2[2], 0.125f * 0.5f);
+  EXPECT_FLOAT_EQ(k2[3], 0.125f * 0.5f);
+  EXPECT_EQ(k2[1], 0.0f);
 }
 
 }  // namespace edge_error_test
