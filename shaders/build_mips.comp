@@ -18,6 +18,11 @@ layout(push_constant) uniform Push { GpuMipStep mip_step; };
 // Level-0 texels along one axis covered by child texel i (span level-0 texels each, `size` in all).
 uint coverage(uint i, uint span, uint size) { return min((i + 1u) * span, size) - i * span; }
 
+// The weight of child texel (cx, cy) in its parent: the level-0 texels it covers.
+float child_weight(uvec4 child, uint cx, uint cy) {
+  return float(coverage(cx, child.w, mip_step.base.x) * coverage(cy, child.w, mip_step.base.y));
+}
+
 // A chain of pairs (mip_step.base.z = 1; MipLayout::Pairs in renderer/gpu/mip_builder.hpp) keeps two
 // channels per texel, each texel holding them for itself and for the next texel of its row (the first
 // after the last): (a_i, b_i, a_i+1, b_i+1). The children of parent column px are the pair at column 2 px,
@@ -29,7 +34,7 @@ vec2 parent_of_pairs(uvec4 child, uint px, uint py) {
   for (uint cy = 2u * py; cy < min(2u * py + 2u, child.z); ++cy) {
     vec4 pair = uintBitsToFloat(imageLoad(texels, int(child.x + cy * child.y + 2u * px)));
     for (uint cx = 2u * px; cx < min(2u * px + 2u, child.y); ++cx) {
-      float weight = float(coverage(cx, child.w, mip_step.base.x) * coverage(cy, child.w, mip_step.base.y));
+      float weight = child_weight(child, cx, cy);
       sum += weight * (cx == 2u * px ? pair.xy : pair.zw);
       total += weight;
     }
@@ -51,7 +56,7 @@ void main() {
   float total = 0.0;
   for (uint cy = 2u * p.y; cy < min(2u * p.y + 2u, child.z); ++cy)
     for (uint cx = 2u * p.x; cx < min(2u * p.x + 2u, child.y); ++cx) {
-      float weight = float(coverage(cx, child.w, mip_step.base.x) * coverage(cy, child.w, mip_step.base.y));
+      float weight = child_weight(child, cx, cy);
       sum += weight * uintBitsToFloat(imageLoad(texels, int(child.x + cy * child.y + cx)));
       total += weight;
     }

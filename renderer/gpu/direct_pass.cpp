@@ -183,20 +183,34 @@ std::vector<vk::BufferKind> binding_kinds() {
   return kinds;
 }
 
-// The vec4s per pixel of the pixel buffer: the colour and coverage, then, with auxiliary outputs, three
-// planes of their sums over the strata (render/direct_pass.glsl).
-uint64_t pixel_vec4s(bool writes_aovs) { return writes_aovs ? 4 : 1; }
+// A pixel's planes in the pixel buffer (render/direct_pass.glsl): the colour and coverage, then, with
+// auxiliary outputs, the sums over the strata of (depth, normal), (uv, error, texture term) and (lit, -).
+constexpr std::size_t kPixelPlanes = 4;
+using PixelPlanes = std::array<vec4, kPixelPlanes>;
+
+// The vec4s per pixel of the pixel buffer.
+uint64_t pixel_vec4s(bool writes_aovs) { return writes_aovs ? kPixelPlanes : 1; }
+
+// The planes of the pixel at `i` of a buffer of `n` pixels per plane.
+PixelPlanes pixel_planes(const std::vector<vec4>& buffer, std::size_t i, std::size_t n) {
+  PixelPlanes planes;
+  for (std::size_t plane = 0; plane < kPixelPlanes; ++plane) planes[plane] = buffer[plane * n + i];
+  return planes;
+}
 
 // One pixel's auxiliary outputs from their sums over k^2 strata, `hits` of which hit geometry:
 // depth, normal, uv and the lit fraction are means over the hits (the normal renormalised), the error
 // over all strata.
-AovPixel aov_pixel(vec4 depth_normal, vec4 uv_error, vec4 lit, float hits, int k) {
+AovPixel aov_pixel(const PixelPlanes& sums, float hits, int k) {
+  const vec4 depth_normal = sums[1], uv_error = sums[2], lit = sums[3];
   AovPixel p;
   p.depth = hits > 0.0f ? depth_normal.x / hits : std::numeric_limits<float>::infinity();
   const glm::vec3 normal(depth_normal.y, depth_normal.z, depth_normal.w);
-  if (hits > 0.0f && glm::dot(normal, normal) > 0.0f) p.normal = glm::normalize(normal);
-  if (hits > 0.0f) p.uv = glm::vec2(uv_error.x, uv_error.y) / hits;
-  if (hits > 0.0f) p.lit = lit.x / hits;
+  if (hits > 0.0f) {
+    if (glm::dot(normal, normal) > 0.0f) p.normal = glm::normalize(normal);
+    p.uv = glm::vec2(uv_error.x, uv_error.y) / hits;
+    p.lit = lit.x / hits;
+  }
   p.error = uv_error.z / static_cast<float>(k * k);
   p.texture_term = uv_error.w > 0.0f;
   return p;
@@ -309,19 +323,17 @@ double DirectPass::refine_group(std::span<const vk::Buffer* const> bindings, std
     pixels_.download(samples.data(), sizeof(vec4) * samples.size());
     for (size_t j = 0; j < chunk.size(); ++j) {
       // The strata's sums in the order a tile's dispatches add them (render/direct_pass.glsl).
-      vec4 colour = samples[j * strata], depth_normal = samples[n + j * strata], uv_error = samples[2 * n + j * strata],
-           lit = samples[3 * n + j * strata];
+      PixelPlanes sums = pixel_planes(samples, j * strata, n);
       for (size_t s = 1; s < strata; ++s) {
-        colour = colour + samples[j * strata + s];
-        depth_normal = depth_normal + samples[n + j * strata + s];
-        uv_error = uv_error + samples[2 * n + j * strata + s];
-        lit = lit + samples[3 * n + j * strata + s];
+        const PixelPlanes stratum = pixel_planes(samples, j * strata + s, n);
+        for (size_t plane = 0; plane < kPixelPlanes; ++plane) sums[plane] = sums[plane] + stratum[plane];
       }
+      vec4 colour = sums[0];
       if (!counts_work_) colour = colour / static_cast<float>(strata);
       const uint32_t at = chunk[j];
       image.set(at, counts_work_ ? image.at(at) + glm::vec3(colour) : glm::vec3(colour));  // work: both passes'
       image.alpha[at] = colour.a;
-      aovs[at] = aov_pixel(depth_normal, uv_error, lit, std::round(colour.a * float(k * k)), k);
+      aovs[at] = aov_pixel(sums, std::round(colour.a * float(k * k)), k);
       aovs[at].error += edge[at] / static_cast<float>(k);  // the first pass's edge term over K (eq. 3)
     }
   }
@@ -412,8 +424,7 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
           image.set(at, glm::vec3(pixel));
           image.alpha[at] = pixel.a;
           if (writes_aovs_)
-            aovs[at] = aov_pixel(tile_pixels[n + i], tile_pixels[2 * n + i], tile_pixels[3 * n + i],
-                                 std::round(pixel.a * float(k * k)), k);
+            aovs[at] = aov_pixel(pixel_planes(tile_pixels, i, n), std::round(pixel.a * float(k * k)), k);
         }
       ++local.tiles;
       if (progress) progress(local.tiles, tiles);
