@@ -42,7 +42,9 @@ vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample
                                  vec2 visibility) {
   GpuPlane plane = plane_at(hit.index);
   vec3 c = vec3(0.0);
-  if (s.w > 0.0) c += s.w * microsurface_traced_radiance(m, plane, hit.barycentric, n, -d, l, visibility.x);
+  if (s.w > 0.0)
+    c += s.w * microsurface_traced_radiance(m, plane, hit.barycentric, n, -d, l, visibility.x, -normalize(s.fp.d_dx),
+                                            -normalize(s.fp.d_dy));
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)  // naive: s.w = 1
   if (s.w < 1.0) c += (1.0 - s.w) * microsurface_radiance(m, plane, s.fp, d, l, visibility.y, true);
 #endif

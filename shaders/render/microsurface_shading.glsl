@@ -69,37 +69,43 @@ vec3 microsurface_facet_radiance(GpuMaterial m, vec3 albedo, MicrosurfaceStatist
   float cos_l = max(dot(microsurface_normal(stats.s_mean), l), 0.0);
   vec3 diffuse = albedo * FACET_INV_PI * (globals.light_irradiance.rgb * (cos_l * visibility) + globals.ambient.rgb);
   if (!kMicrosurfaceLobes || m.kind.y == 0u) return diffuse;
-  return diffuse + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_specular(stats, m.params.xy, l, v) * visibility);
+  return diffuse + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_specular(stats, m.params.xy, l, v, vec4(0.0)) * visibility);
 }
 
 // A traced hit at field texel q, shaded as the reference shades a sample (cpu/reference_renderer.cpp):
 // the colour maps at (H1)-(H2), Lambert and the facet's own Beckmann lobe with the micro-normal n
-// (unit, facing the viewer); v, l in world space.
-vec3 microsurface_traced_radiance(GpuMaterial m, GpuPlane plane, vec2 q, vec3 n, vec3 v, vec3 l, float visibility) {
+// (unit, facing the viewer); v, l in world space. filtered averages the lobe over the pixel, whose
+// neighbouring views are v_x and v_y (eq. P2 of docs/microsurface_filtering.md); naive takes it at v.
+vec3 microsurface_traced_radiance(GpuMaterial m, GpuPlane plane, vec2 q, vec3 n, vec3 v, vec3 l, float visibility,
+                                  vec3 v_x, vec3 v_y) {
   vec3 point = heightfield_point(heightfield_quads(m), q, m.albedo.w);
   vec3 albedo = microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz);
   vec3 c = lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
   if (!kMicrosurfaceLobes || m.kind.y == 0u || visibility == 0.0) return c;
-  return c + globals.light_irradiance.rgb * m.albedo.rgb *
-                 (beckmann_facet_specular(n, plane.tangent.xyz, v, l, m.params.xy) * visibility);
+  float f_cos = kTextureMethod >= 3u ? beckmann_facet_specular_over_pixel(n, plane.tangent.xyz, v, l, m.params.xy, v_x, v_y)
+                                     : beckmann_facet_specular(n, plane.tangent.xyz, v, l, m.params.xy);
+  return c + globals.light_irradiance.rgb * m.albedo.rgb * (f_cos * visibility);
 }
 
 // The Beckmann lobe on the footprint's slopes in the frame of its mean facet (normal n of the mean
 // slope, tangent the plane's projected onto it): the LEAN convolution about slope 0 there. A footprint
 // on a bump's flank is a tilted patch; in the plane's slope space its lobe would be divided by the
 // plane's cos(theta_v), which at grazing views is far below the patch's own (radiance 10x too high on
-// scenes/microsurface_horizon.json). v, l in the plane frame.
-float microsurface_mean_facet_specular(MicrosurfaceStatistics stats, vec2 alpha, vec3 l, vec3 v) {
-  vec3 n = microsurface_normal(stats.s_mean);
-  vec3 t = normalize(vec3(1.0, 0.0, 0.0) - n.x * n), b = cross(n, t);
+// scenes/microsurface_horizon.json). v, l in the plane frame, as are the pixel's neighbouring views v_x, v_y,
+// over which D is averaged (eq. P2 of docs/microsurface_filtering.md).
+float microsurface_mean_facet_specular(MicrosurfaceStatistics stats, vec2 alpha, vec3 l, vec3 v, vec3 v_x, vec3 v_y) {
+  BeckmannFacetFrame f = beckmann_facet_frame(microsurface_normal(stats.s_mean), vec3(1.0, 0.0, 0.0));
   MicrosurfaceStatistics centred = stats;
   centred.s_mean = vec2(0.0);
-  return microsurface_specular(centred, alpha, vec3(dot(l, t), dot(l, b), dot(l, n)), vec3(dot(v, t), dot(v, b), dot(v, n)));
+  vec3 l_facet = beckmann_facet_local(f, l), v_facet = beckmann_facet_local(f, v);
+  vec4 steps = microsurface_pixel_half_slope_steps(l_facet, v_facet, beckmann_facet_local(f, v_x), beckmann_facet_local(f, v_y));
+  return microsurface_specular(centred, alpha, l_facet, v_facet, steps);
 }
 
 // The filtered radiance of a footprint with Gaussian statistics `stats` (docs/microsurface_filtering.md
-// eq. M7): E/pi V H_lit S_cos + E_amb/pi H S + V E R f_spec.
-vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats, vec3 v, vec3 l, float visibility) {
+// eq. M7): E/pi V H_lit S_cos + E_amb/pi H S + V E R f_spec; v_x, v_y: the views one pixel step away.
+vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats, vec3 v, vec3 l, float visibility,
+                                    vec3 v_x, vec3 v_y) {
   MicrosurfaceVisibility vis = microsurface_visibility(stats, v, l);
   vec3 slope_sum = vec3(0.0), slope_cos_sum = vec3(0.0);
   // Without a slope colour map only the smooth cosine is integrated: the 3 x 3 rule suffices there.
@@ -141,7 +147,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
   vec3 radiance = FACET_INV_PI * (globals.light_irradiance.rgb * visibility * heights_lit * slope_cos_sum +
                                   globals.ambient.rgb * heights * slope_sum);
   if (!kMicrosurfaceLobes || m.kind.y == 0u) return radiance;
-  return radiance + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_mean_facet_specular(stats, m.params.xy, l, v) * visibility);
+  return radiance + globals.light_irradiance.rgb * m.albedo.rgb * (microsurface_mean_facet_specular(stats, m.params.xy, l, v, v_x, v_y) * visibility);
 }
 
 // The pixel's footprint on microsurface `m` on `plane`, hit at p by the ray o + t d; d_dx, d_dy: the
@@ -149,9 +155,11 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
 // n_surface (the rectangle's, or the traced surface's: T4 of docs/microsurface_filtering.md); their
 // offsets are projected onto the rectangle (the field is a graph over it). q: the hit in texels from
 // the rectangle's (-w/2, -h/2) corner, where the field's vertex (0, 0) sits; size: the field in
-// texels; duv_*: the footprint's axes in field uv (period = the field), as for colour-mapped textures.
+// texels; duv_*: the footprint's axes in field uv (period = the field), as for colour-mapped textures;
+// d_dx, d_dy: the neighbouring rays themselves (the pixel's spread of views).
 struct MicrosurfaceFootprint {
   vec2 q, size, duv_dx, duv_dy;
+  vec3 d_dx, d_dy;
 };
 
 MicrosurfaceFootprint microsurface_footprint(GpuMaterial m, GpuPlane plane, vec3 o, vec3 d, vec3 p, vec3 d_dx,
@@ -163,7 +171,7 @@ MicrosurfaceFootprint microsurface_footprint(GpuMaterial m, GpuPlane plane, vec3
   vec3 dpdu = t * (size.x * delta), dpdv = b * (size.y * delta);
   return MicrosurfaceFootprint((vec2(dot(r, t), dot(r, b)) + plane.uv_half_size.zw) / delta, size,
                                uv_differential(o, d_dx, p, n_surface, dpdu, dpdv),
-                               uv_differential(o, d_dy, p, n_surface, dpdu, dpdv));
+                               uv_differential(o, d_dy, p, n_surface, dpdu, dpdv), d_dx, d_dy);
 }
 
 // The pixel's footprint on the surface `filtered` traces, from its footprint flat_fp on the flat
@@ -204,10 +212,14 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
   vec2 q = fp.q, size = fp.size, duv_dx = fp.duv_dx, duv_dy = fp.duv_dy;
   vec3 v = vec3(dot(-d, t), dot(-d, b), dot(-d, n)) / length(d);
   vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, n));
+  vec3 v_x = -vec3(dot(fp.d_dx, t), dot(fp.d_dx, b), dot(fp.d_dx, n)) / length(fp.d_dx);
+  vec3 v_y = -vec3(dot(fp.d_dy, t), dot(fp.d_dy, b), dot(fp.d_dy, n)) / length(fp.d_dy);
   // Seen from below, the field is shaded as its mirror image (the upper side's statistics).
   if (v.z < 0.0) {
     v.z = -v.z;
     l.z = -l.z;
+    v_x.z = -v_x.z;
+    v_y.z = -v_y.z;
   }
   v.z = max(v.z, 1e-6);
   // Parallax: the pixel's rays meet the real surface displaced from the flat-plane hit by z cot(theta_v)
@@ -245,7 +257,7 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
   // The program that traces height fields shades footprints for filtered alone; the other, for mip and
   // colormip alone (renderer/gpu/direct_pass.cpp): each compiles only its own methods' code.
 #ifdef FACET_HEIGHT_FIELDS
-  return microsurface_filtered_radiance(m, stats, v, l, visibility);
+  return microsurface_filtered_radiance(m, stats, v, l, visibility, v_x, v_y);
 #else
   // mip and colormip: the mean slope as a point, no variance.
   MicrosurfaceStatistics mean_point = microsurface_point_statistics(vec3(stats.h_mean, stats.s_mean));

@@ -172,7 +172,7 @@ TEST(MicrosurfaceFilter, SpecularLobeIsTheConvolvedBeckmann) {
   const glm::dvec3 h = glm::normalize(l + v);
   const double beckmann = k64::ndf_beckmann_D(h, alpha) /
                           (1.0 + k64::ndf_beckmann_lambda(l, alpha) + k64::ndf_beckmann_lambda(v, alpha)) / (4.0 * v.z);
-  EXPECT_NEAR(k64::microsurface_specular(flat, alpha, l, v) / beckmann, 1.0, 1e-6);
+  EXPECT_NEAR(k64::microsurface_specular(flat, alpha, l, v, glm::dvec4(0.0)) / beckmann, 1.0, 1e-6);
 
   const k64::MicrosurfaceStatistics rough{0.0, 0.01, {0.05, -0.1}, {0.02, 0.05, 0.01}};
   const glm::dvec2 sh(-h.x / h.z, -h.y / h.z);
@@ -194,7 +194,7 @@ TEST(MicrosurfaceFilter, SpecularLobeIsTheConvolvedBeckmann) {
   const glm::dvec2 vl = k64::microsurface_angles(l), vv = k64::microsurface_angles(v);
   const double g2 = k64::gaussian_smith_g2(rough.s_mean, cov, vl.x, vl.y, vv.x, vv.y);
   const double expected = conv / std::pow(h.z, 4) * g2 / (4.0 * v.z);
-  EXPECT_NEAR(k64::microsurface_specular(rough, alpha, l, v) / expected, 1.0, 1e-4);
+  EXPECT_NEAR(k64::microsurface_specular(rough, alpha, l, v, glm::dvec4(0.0)) / expected, 1.0, 1e-4);
 }
 
 // A zero-variance footprint is a point: every slope node sits on the slope, every height node on the
@@ -266,8 +266,9 @@ TEST(MicrosurfaceFilter, FloatTwinFollowsDouble) {
                                             k64::microsurface_height_node(k, s64.h_mean, s64.h_sigma, vis64.lambda_v)) /
                                        s64.h_sigma);
       const glm::dvec2 alpha(0.05, 0.2);
-      const double spec64 = k64::microsurface_specular(s64, alpha, l, v);
-      const double spec32 = k32::microsurface_specular(s32, glm::vec2(alpha), glm::vec3(l), glm::vec3(v));
+      const double spec64 = k64::microsurface_specular(s64, alpha, l, v, glm::dvec4(0.0));
+      const double spec32 =
+          k32::microsurface_specular(s32, glm::vec2(alpha), glm::vec3(l), glm::vec3(v), glm::vec4(0.0f));
       worst_spec = std::max(worst_spec, std::abs(spec32 - spec64) / std::max(spec64, 1e-3));
     }
   std::printf(
@@ -307,7 +308,7 @@ TEST(MicrosurfaceFilter, ExtremeInputsStayFinite) {
           {
             const auto s = k64::microsurface_statistics(m0, m1);
             const auto vis = k64::microsurface_visibility(s, v, l);
-            check(s, vis, k64::microsurface_specular(s, glm::dvec2(0.001, 1000.0), l, v),
+            check(s, vis, k64::microsurface_specular(s, glm::dvec2(0.001, 1000.0), l, v, glm::dvec4(0.0)),
                   k64::microsurface_slope_node(vis.ds, MS_SLOPE_NODES, 3, 0),
                   k64::microsurface_height_node(MS_HEIGHT_NODES - 1, s.h_mean, s.h_sigma, vis.lambda_v + vis.lambda_l));
             const auto corner3 = k64::microsurface_slope_node(vis.ds, MS_SLOPE_NODES_COSINE, 2, 0);  // the 3 x 3 grid
@@ -316,9 +317,11 @@ TEST(MicrosurfaceFilter, ExtremeInputsStayFinite) {
           {
             const auto s = k32::microsurface_statistics(glm::vec4(m0), glm::vec4(m1));
             const auto vis = k32::microsurface_visibility(s, glm::vec3(v), glm::vec3(l));
-            check(s, vis, k32::microsurface_specular(s, glm::vec2(0.001f, 1000.0f), glm::vec3(l), glm::vec3(v)),
-                  k32::microsurface_slope_node(vis.ds, MS_SLOPE_NODES, 3, 0),
-                  k32::microsurface_height_node(MS_HEIGHT_NODES - 1, s.h_mean, s.h_sigma, vis.lambda_v + vis.lambda_l));
+            check(
+                s, vis,
+                k32::microsurface_specular(s, glm::vec2(0.001f, 1000.0f), glm::vec3(l), glm::vec3(v), glm::vec4(0.0f)),
+                k32::microsurface_slope_node(vis.ds, MS_SLOPE_NODES, 3, 0),
+                k32::microsurface_height_node(MS_HEIGHT_NODES - 1, s.h_mean, s.h_sigma, vis.lambda_v + vis.lambda_l));
             const auto corner3 = k32::microsurface_slope_node(vis.ds, MS_SLOPE_NODES_COSINE, 2, 0);  // the 3 x 3 grid
             EXPECT_TRUE(std::isfinite(corner3.s.x) && std::isfinite(corner3.s.y) && corner3.weight > 0.0);
           }
