@@ -142,6 +142,11 @@ inline real microsurface_box_normal_mean(real x, real w) {
   return (lo >= real(0) ? tail_lo - tail_hi : real(1) - tail_lo - tail_hi) / w;
 }
 
+// L^-1 v for the lower-triangular L = [[l00, 0], [l10, l11]]: v in whitened slopes.
+inline real2 microsurface_whiten(real2 v, real l00, real l10, real l11) {
+  return real2(v.x / l00, (v.y - l10 * v.x / l00) / l11);
+}
+
 // The density of the slopes N(mean, cov) averaged over the parallelogram s0 + step_x a + step_y b,
 // a, b in [-1/2, 1/2]: the half vector's slopes over a pixel (box filter), s0 at its centre and step_x,
 // step_y its change per pixel step (eq. P2 of docs/microsurface_filtering.md). cov's determinant is kept at
@@ -155,10 +160,8 @@ inline real microsurface_pixel_slope_density(real2 s0, real2 step_x, real2 step_
                                              real det_min) {
   real det = max(cov.x * cov.y - cov.z * cov.z, det_min);
   real l00 = sqrt(cov.x), l10 = cov.z / l00, l11 = sqrt(det) / l00;  // cov = L L^T (determinant det)
-  // L^-1 applied to the centre's offset and the two steps
-  real2 c = real2((s0.x - mean.x) / l00, ((s0.y - mean.y) - l10 * (s0.x - mean.x) / l00) / l11);
-  real2 ka = real2(step_x.x / l00, (step_x.y - l10 * step_x.x / l00) / l11);
-  real2 kb = real2(step_y.x / l00, (step_y.y - l10 * step_y.x / l00) / l11);
+  real2 c = microsurface_whiten(s0 - mean, l00, l10, l11);
+  real2 ka = microsurface_whiten(step_x, l00, l10, l11), kb = microsurface_whiten(step_y, l00, l10, l11);
   bool a_longer = dot(ka, ka) >= dot(kb, kb);
   real2 k1 = a_longer ? ka : kb, k2 = a_longer ? kb : ka;
   real width = length(k1);
@@ -213,6 +216,11 @@ inline real4 microsurface_pixel_half_slope_steps(real3 l, real3 v, real3 v_x, re
   return real4(microsurface_half_slope(l, v_x) - s, microsurface_half_slope(l, v_y) - s);
 }
 
+// The slope covariance (var_x, var_y, c_xy) of a Beckmann lobe of roughness alpha: N(0, alpha^2/2).
+inline real3 microsurface_lobe_cov(real2 alpha) {
+  return real3(real(0.5) * alpha.x * alpha.x, real(0.5) * alpha.y * alpha.y, real(0));
+}
+
 // The Beckmann lobe (roughness alpha along the plane's tangent and bitangent) on the footprint's
 // slopes, LEAN-convolved (Olano and Baker 2010): slopes N(s_mean, Sigma + alpha^2/2). Returns
 // f cos_i = D(h) G2/(4 cos_o) with D(h) = p(slope of h)/h_z^4 and the height-correlated
@@ -221,7 +229,7 @@ inline real4 microsurface_pixel_half_slope_steps(real3 l, real3 v, real3 v_x, re
 // at the pixel's centre alone); G2, smooth over a pixel, is taken at its centre.
 inline real microsurface_specular(MicrosurfaceStatistics s, real2 alpha, real3 l, real3 v, real4 pixel_steps) {
   if (l.z <= real(0) || v.z <= real(0)) return real(0);
-  real3 cov = s.s_cov + real3(real(0.5) * alpha.x * alpha.x, real(0.5) * alpha.y * alpha.y, real(0));
+  real3 cov = s.s_cov + microsurface_lobe_cov(alpha);
   real D = microsurface_slope_ndf(normalize(l + v), s.s_mean, cov, real(0.25) * alpha.x * alpha.x * alpha.y * alpha.y,
                                   pixel_steps);
   real2 light = microsurface_angles(l);
@@ -240,7 +248,7 @@ inline real beckmann_facet_specular_over_pixel(real3 n, real3 tangent, real3 v, 
   real3 wo = beckmann_facet_local(f, v);
   if (!(wi.z > real(0) && wo.z > real(0))) return real(0);
   real4 steps = microsurface_pixel_half_slope_steps(wi, wo, beckmann_facet_local(f, v_x), beckmann_facet_local(f, v_y));
-  real3 lobe = real3(real(0.5) * alpha.x * alpha.x, real(0.5) * alpha.y * alpha.y, real(0));
+  real3 lobe = microsurface_lobe_cov(alpha);
   real D = microsurface_slope_ndf(normalize(wi + wo), real2(0), lobe, lobe.x * lobe.y, steps);
   return D * beckmann_facet_g2(wi, wo, alpha) / (real(4) * wo.z);
 }

@@ -203,6 +203,11 @@ float microsurface_trace_weight(MicrosurfaceFootprint fp) {
   return clamp(2.0 - microsurface_footprint_texels(fp), 0.0, 1.0);
 }
 
+// The unit direction toward the viewer of a ray d (any length) in `frame`.
+vec3 microsurface_view(BeckmannFacetFrame frame, vec3 d) {
+  return vec3(dot(-d, frame.t), dot(-d, frame.b), dot(-d, frame.n)) / length(d);
+}
+
 // The radiance of microsurface `m` on `plane` by the statistics of footprint fp (methods mip, colormip,
 // filtered) of the ray direction d; visibility of the light from the hit.
 vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint fp, vec3 d, vec3 l_world,
@@ -210,10 +215,9 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
   vec3 t = plane.tangent.xyz, n = plane.normal.xyz, b = cross(n, t);
   float delta = m.albedo.w;
   vec2 q = fp.q, size = fp.size, duv_dx = fp.duv_dx, duv_dy = fp.duv_dy;
-  vec3 v = vec3(dot(-d, t), dot(-d, b), dot(-d, n)) / length(d);
+  BeckmannFacetFrame frame = BeckmannFacetFrame(t, b, n);  // the plane's
+  vec3 v = microsurface_view(frame, d), v_x = microsurface_view(frame, fp.d_dx), v_y = microsurface_view(frame, fp.d_dy);
   vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, n));
-  vec3 v_x = -vec3(dot(fp.d_dx, t), dot(fp.d_dx, b), dot(fp.d_dx, n)) / length(fp.d_dx);
-  vec3 v_y = -vec3(dot(fp.d_dy, t), dot(fp.d_dy, b), dot(fp.d_dy, n)) / length(fp.d_dy);
   // Seen from below, the field is shaded as its mirror image (the upper side's statistics).
   if (v.z < 0.0) {
     v.z = -v.z;
