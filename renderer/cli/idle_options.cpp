@@ -9,12 +9,16 @@ std::vector<std::string> idle_option_warnings(const Scene& scene, const gpu::Ren
   const report::SceneFeatures features = report::scene_features(scene);
   const std::string source = scene.source.string();
   std::vector<std::string> warnings;
-  // filtered:adaptive still refines geometric edges there (the error estimate's edge term).
+  // filtered:adaptive still refines geometric edges there (the error estimate's edge term); filtered averages
+  // microflake lobes over the pixel (docs/microflake_brdf.md), which mip and colormip leave at its centre.
+  const bool filters = method.texture == gpu::RenderMethod::Texture::Filtered ||
+                       method.texture == gpu::RenderMethod::Texture::FilteredTable;
   if (method.texture != gpu::RenderMethod::Texture::Naive && method.adaptive_samples_per_axis == 0 &&
-      !features.colormap_texture && !features.microsurface) {
+      !features.colormap_texture && !features.microsurface && !(filters && features.microflake)) {
     const std::string strata = method.samples_per_axis > 1 ? "ss:" + std::to_string(method.samples_per_axis) : "naive";
-    warnings.push_back("facet: warning: " + source + " has no colormap_texture or microsurface material: --method " +
-                       method.name() + " renders it as " + strata);
+    warnings.push_back("facet: warning: " + source + " has no colormap_texture or microsurface material" +
+                       (filters ? " (nor microflake)" : "") + ": --method " + method.name() + " renders it as " +
+                       strata);
   }
   if (!diffraction_options.empty() && !features.diffraction) {
     std::string given;

@@ -13,6 +13,10 @@ bool always(const SceneFeatures&) { return true; }
 // mip, colormip and filtered differ from naive only on sub-pixel detail.
 bool has_subpixel_detail(const SceneFeatures& f) { return f.colormap_texture || f.microsurface; }
 
+// filtered (per stratum and adaptive too) also averages a microflake lobe over the pixel
+// (docs/microflake_brdf.md, "The lobe over the pixel"); mip and colormip have nothing to add there.
+bool has_filtered_detail(const SceneFeatures& f) { return has_subpixel_detail(f) || f.microflake; }
+
 bool has_diffraction(const SceneFeatures& f) { return f.diffraction; }
 
 // ss:8 and ss:16 trace 64 and 256 rays per pixel, each through the whole spectral loop on a
@@ -50,14 +54,14 @@ const std::vector<CatalogueEntry>& method_catalogue() {
       {"naive", always, true, "naive"},
       {"mip", has_subpixel_detail, true, "mip"},
       {"colormip", has_subpixel_detail, true, "colormip"},
-      {"filtered", has_subpixel_detail, true, "filtered"},
+      {"filtered", has_filtered_detail, true, "filtered"},
       {"filtered:table", has_subpixel_detail, true, "filtered:table"},
       // filtered per stratum: the strata antialias geometric edges (silhouettes, a traced field's
       // occlusions), filtered the detail within each stratum's footprint.
-      {"filtered:ss:2", has_subpixel_detail, true, "filtered:ss:2"},
-      {"filtered:ss:4", has_subpixel_detail, false, "filtered:ss:4"},
+      {"filtered:ss:2", has_filtered_detail, true, "filtered:ss:2"},
+      {"filtered:ss:4", has_filtered_detail, false, "filtered:ss:4"},
       // filtered strata only where filtered's estimated error is largest (two more strata per pixel's work).
-      {"filtered:adaptive", has_subpixel_detail, true, "filtered:adaptive"},
+      {"filtered:adaptive", has_filtered_detail, true, "filtered:adaptive"},
       // Diffraction (issue 11): the three methods at the material's own settings, then the spectral
       // integral with fewer or more wavelength samples than the material's tolerance picks, and
       // with fewer Taylor terms.

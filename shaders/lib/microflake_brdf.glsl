@@ -9,15 +9,17 @@
 #include "lib/prelude.glsl"
 #include "lib/cross_section.glsl"
 
+// The symmetric denominator sigma(wi) mu_o + sigma(wo) mu_i - E mu_i mu_o (wi, wo above the surface).
+inline real microflake_brdf_denominator(int ndf, real param, real3 wi, real3 wo) {
+  real denominator = ndf_sigma(ndf, wi, param) * wo.z + ndf_sigma(ndf, wo, param) * wi.z -
+                     ndf_mean_z(ndf, param) * wi.z * wo.z;
+  return max(denominator, real(1e-30));
+}
+
 // f(wi, wo) for unit wi, wo pointing away from the surface; 0 unless both are above it.
 inline real microflake_brdf(int ndf, real param, real3 wi, real3 wo) {
-  real mu_i = wi.z;
-  real mu_o = wo.z;
-  if (mu_i <= real(0) || mu_o <= real(0)) return real(0);
-  real3 h = normalize(wi + wo);
-  real denominator = ndf_sigma(ndf, wi, param) * mu_o + ndf_sigma(ndf, wo, param) * mu_i -
-                     ndf_mean_z(ndf, param) * mu_i * mu_o;
-  return ndf_D(ndf, h, param) / (real(4) * max(denominator, real(1e-30)));
+  if (wi.z <= real(0) || wo.z <= real(0)) return real(0);
+  return ndf_D(ndf, normalize(wi + wo), param) / (real(4) * microflake_brdf_denominator(ndf, param, wi, wo));
 }
 
 #endif

@@ -17,14 +17,20 @@ inline real3 to_normal_frame(real3 n, real3 w) {
   return real3(dot(w, t), dot(w, bt), dot(w, n));
 }
 
+// L = albedo (f E cos_i visibility + ambient / pi) for the BRDF value f and cos_i = n.l.
+inline real3 microflake_shade(real3 albedo, real f, real cos_i, real3 light_irradiance, real visibility,
+                              real3 ambient_irradiance) {
+  return albedo * (light_irradiance * (f * max(cos_i, real(0)) * visibility) + ambient_irradiance * FACET_INV_PI);
+}
+
 // L = albedo (f(l, v) E (n.l) visibility + ambient / pi); n unit, facing v; v and l unit, away
 // from the surface (toward the viewer and the light).
 inline real3 microflake_radiance(int ndf, real param, real3 albedo, real3 n, real3 v, real3 l,
                                  real3 light_irradiance, real visibility, real3 ambient_irradiance) {
   real3 wi = to_normal_frame(n, l);
   real3 wo = to_normal_frame(n, v);
-  real f = microflake_brdf(ndf, param, wi, wo);
-  return albedo * (light_irradiance * (f * max(wi.z, real(0)) * visibility) + ambient_irradiance * FACET_INV_PI);
+  return microflake_shade(albedo, microflake_brdf(ndf, param, wi, wo), wi.z, light_irradiance, visibility,
+                          ambient_irradiance);
 }
 
 #endif

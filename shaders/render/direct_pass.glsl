@@ -78,6 +78,7 @@ const bool kTracesHeightFields = false;
 #include "lib/camera.glsl"
 #include "lib/lambert.glsl"
 #include "lib/microflake_shading.glsl"
+#include "lib/microflake_pixel_lobe.glsl"
 #include "render/diffraction_shading.glsl"
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
@@ -170,9 +171,28 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   }
 #endif
 #if FACET_VARIANT_HAS(FACET_CODE_MICROFLAKE)
-  if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE)
+  if (kHasMicroflake && m.kind.x == FACET_MATERIAL_MICROFLAKE) {
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+    // filtered averages the lobe over the pixel (docs/microflake_brdf.md, "The lobe over the pixel"), whose
+    // normals and views turn toward the neighbouring rays' (F3), on each axis the side where they turn less.
+    vec4 steps = vec4(0.0);
+    if (kTextureMethod >= 3u) {
+      vec2 to[4];  // toward +x, -x, +y, -y
+      for (int k = 0; k < 4; ++k) {
+        vec2 offset = (k < 2 ? vec2(pixel_step, 0.0) : vec2(0.0, pixel_step)) * (k % 2 == 0 ? 1.0 : -1.0);
+        vec3 d_q = camera_ray(film + offset);
+        vec3 n_q = normalize(shading_normal_seen_by(hit, p, o, d_q));
+        to[k] = microflake_half_slope_step(n, -d, l, dot(n_q, n) < 0.0 ? -n_q : n_q, -d_q);
+      }
+      steps = vec4(microflake_pixel_step(to[0], to[1]), microflake_pixel_step(to[2], to[3]));
+    }
+    return microflake_radiance_over_pixel(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l,
+                                          globals.light_irradiance.rgb, visibility.x, globals.ambient.rgb, steps);
+#else
     return microflake_radiance(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l, globals.light_irradiance.rgb,
                                visibility.x, globals.ambient.rgb);
+#endif
+  }
 #endif
   vec3 albedo = m.albedo.rgb;
 #if FACET_VARIANT_HAS(FACET_CODE_TEXTURE)

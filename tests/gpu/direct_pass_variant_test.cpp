@@ -61,6 +61,8 @@ TEST(DirectPassVariants, ScenesNeedTheirFamiliesPrimitivesAndMethods) {
   EXPECT_EQ(code("default.json", "filtered"), uint32_t{FACET_CODE_SPHERES | FACET_CODE_TRIANGLES});
   EXPECT_EQ(code("colormap_seams_cube.json", "mip"), uint32_t{FACET_CODE_TEXTURE | FACET_CODE_TRIANGLES});
   EXPECT_EQ(code("microflake_blend.json", "naive"), uint32_t{FACET_CODE_MICROFLAKE | FACET_CODE_SPHERES});
+  EXPECT_EQ(code("microflake_blend.json", "filtered:ss:2"),  // the lobe over the pixel
+            uint32_t{FACET_CODE_MICROFLAKE | FACET_CODE_SPHERES | FACET_CODE_FILTERED});
   EXPECT_EQ(code("diffraction_plate.json", "naive"),
             uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_SPECTRAL});
   RenderMethod orders = RenderMethod::parse("naive");

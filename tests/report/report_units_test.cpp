@@ -300,6 +300,11 @@ TEST(MethodCatalogue, AppliesTextureMethodsOnlyToScenesWithSubPixelDetail) {
   EXPECT_EQ(quick, (std::vector<std::string>{"naive", "mip", "colormip", "filtered", "filtered:table", "filtered:ss:2",
                                              "filtered:adaptive", "ss:1", "ss:2", "ss:4", "ss:8"}));
   EXPECT_EQ(names(select_methods(textured, false, {})).size(), quick.size() + 2);  // + filtered:ss:4, ss:16
+  SceneFeatures flakes;  // filtered averages their lobes over the pixel; mip and colormip add nothing
+  flakes.microflake = true;
+  EXPECT_EQ(names(select_methods(flakes, true, {})),
+            (std::vector<std::string>{"naive", "filtered", "filtered:ss:2", "filtered:adaptive", "ss:1", "ss:2", "ss:4",
+                                      "ss:8"}));
   EXPECT_EQ(names(select_methods(plain, false, {"ss:99", "filtered"})),
             (std::vector<std::string>{"ss:99", "filtered"}));
   SceneFeatures grating;
