@@ -108,28 +108,14 @@ inline real microflake_D_over_pixel(int ndf, real param, real3 h, real4 pixel_st
   return max((mixture + g * residual) / (near_z2 * near_z2), real(0));
 }
 
-// The slope -w.xy/w.z of a direction in the frame of the normal n (to_normal_frame), w.z kept at least
-// 1e-3 |w|: a neighbouring pixel's view or normal near the horizon gives a large, finite slope.
-inline real2 microflake_frame_slope(real3 n, real3 w) {
-  real3 u = to_normal_frame(n, w);
-  real z = max(u.z, real(1e-3) * length(u));
-  return real2(-u.x / z, -u.y / z);
-}
+// The slope of a direction in the frame of the normal n (to_normal_frame; horizon_safe_slope).
+inline real2 microflake_frame_slope(real3 n, real3 w) { return horizon_safe_slope(to_normal_frame(n, w)); }
 
 // The half vector's slope step toward one neighbouring pixel (eq. F3) in the frame of the pixel's normal n,
 // relative to the normal each point of the pixel has: to first order the slope of the half vector of l and the
 // neighbour's view v_q less the slope of the neighbour's normal n_q, both in n's frame, less the centre's.
 inline real2 microflake_half_slope_step(real3 n, real3 v, real3 l, real3 n_q, real3 v_q) {
   return microflake_frame_slope(n, l + v_q) - microflake_frame_slope(n, n_q) - microflake_frame_slope(n, l + v);
-}
-
-// The pixel's step along one axis from its neighbours on both sides (to_plus toward the next pixel, to_minus
-// toward the previous one): the one-sided step of the smaller length, the side where the normals turn less. A
-// parallelogram symmetric about the centre mirrors the step onto the other side; at a silhouette the outer
-// neighbour's normals turn through the horizon, and mirrored onto the inner side they reached a highlight one
-// pixel in (a rim pixel read 36 against the reference's 0.02 on scenes/microflake_glints.json at 320 x 180).
-inline real2 microflake_pixel_step(real2 to_plus, real2 to_minus) {
-  return dot(to_plus, to_plus) <= dot(to_minus, to_minus) ? to_plus : -to_minus;
 }
 
 // microflake_radiance with D averaged over the pixel (eq. F2); the BRDF's denominator (the cross-sections),

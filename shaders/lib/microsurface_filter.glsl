@@ -238,16 +238,41 @@ inline real microsurface_specular(MicrosurfaceStatistics s, real2 alpha, real3 l
   return D * G2 / (real(4) * v.z);
 }
 
+// A pixel's step along one axis from its neighbours on both sides (to_plus toward the next pixel, to_minus toward
+// the previous one): the one-sided step of the smaller length, the side where the pixel's normals turn less. The
+// parallelogram of eq. P2 is symmetric about the centre and mirrors the step onto the other side; where the
+// outer neighbour lies beyond a silhouette or a bilinear patch's crease its normal is not the pixel's, and
+// mirrored it swept a highlight into pixels that have none (docs/microflake_brdf.md, F3).
+inline real2 smaller_pixel_step(real2 to_plus, real2 to_minus) {
+  return dot(to_plus, to_plus) <= dot(to_minus, to_minus) ? to_plus : -to_minus;
+}
+
+// The slope of the unit direction w (-w.xy/w.z), w.z kept at least 1e-3 |w|: a neighbouring normal or view
+// near the horizon gives a large, finite slope.
+inline real2 horizon_safe_slope(real3 w) {
+  real z = max(w.z, real(1e-3) * length(w));
+  return real2(-w.x / z, -w.y / z);
+}
+
 // beckmann_facet_specular with D averaged over the pixel (eq. P2): the facet's Beckmann slopes
-// N(0, alpha^2/2) over the pixel's half vectors, whose views are v at its centre and v_x, v_y one pixel
-// step away (unit, world space like n, tangent, v and l). G2 is the facet's, at the centre.
+// N(0, alpha^2/2) over the pixel's half vectors relative to the pixel's own facet normals. Its views are v at
+// the centre and v_x, v_y one pixel step away; its normals n at the centre and n_xp, n_xm, n_yp, n_ym one
+// step away on each side (a bilinear patch's normal turns across a pixel that spans part of a texel). To
+// first order the half vector's slope relative to a neighbour's normal is its slope less the normal's, both
+// in n's frame (eq. P3), the normals' turn taken on each axis's smaller side (smaller_pixel_step). Unit,
+// world space like n, tangent, v and l. G2 is the facet's, at the centre.
 inline real beckmann_facet_specular_over_pixel(real3 n, real3 tangent, real3 v, real3 l, real2 alpha, real3 v_x,
-                                               real3 v_y) {
+                                               real3 v_y, real3 n_xp, real3 n_xm, real3 n_yp, real3 n_ym) {
   BeckmannFacetFrame f = beckmann_facet_frame(n, tangent);
   real3 wi = beckmann_facet_local(f, l);
   real3 wo = beckmann_facet_local(f, v);
   if (!(wi.z > real(0) && wo.z > real(0))) return real(0);
   real4 steps = microsurface_pixel_half_slope_steps(wi, wo, beckmann_facet_local(f, v_x), beckmann_facet_local(f, v_y));
+  real2 turn_x = smaller_pixel_step(horizon_safe_slope(beckmann_facet_local(f, n_xp)),
+                                    horizon_safe_slope(beckmann_facet_local(f, n_xm)));
+  real2 turn_y = smaller_pixel_step(horizon_safe_slope(beckmann_facet_local(f, n_yp)),
+                                    horizon_safe_slope(beckmann_facet_local(f, n_ym)));
+  steps -= real4(turn_x, turn_y);
   real3 lobe = microsurface_lobe_cov(alpha);
   real D = microsurface_slope_ndf(normalize(wi + wo), real2(0), lobe, lobe.x * lobe.y, steps);
   return D * beckmann_facet_g2(wi, wo, alpha) / (real(4) * wo.z);

@@ -184,7 +184,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
         vec3 n_q = normalize(shading_normal_seen_by(hit, p, o, d_q));
         to[k] = microflake_half_slope_step(n, -d, l, dot(n_q, n) < 0.0 ? -n_q : n_q, -d_q);
       }
-      steps = vec4(microflake_pixel_step(to[0], to[1]), microflake_pixel_step(to[2], to[3]));
+      steps = vec4(smaller_pixel_step(to[0], to[1]), smaller_pixel_step(to[2], to[3]));
     }
     return microflake_radiance_over_pixel(int(m.kind.y), m.params.x, m.albedo.rgb, n, -d, l,
                                           globals.light_irradiance.rgb, visibility.x, globals.ambient.rgb, steps);

@@ -51,6 +51,12 @@ vec3 heightfield_point(uint quads, vec2 q, float delta) {
   return vec3(h, mix(z.y - z.x, z.w - z.z, f.y) / delta, mix(z.z - z.x, z.w - z.y, f.x) / delta);
 }
 
+// The field's micro-normal (unnormalised, on the plane's upper side) at a point (z, s_x, s_y) of
+// heightfield_point: its slopes along the plane's tangent and bitangent.
+vec3 heightfield_normal(GpuPlane plane, vec3 point) {
+  return plane.normal.xyz - point.y * plane.tangent.xyz - point.z * cross(plane.normal.xyz, plane.tangent.xyz);
+}
+
 // The field of microsurface m on `plane`.
 HeightField heightfield_of(GpuMaterial m, GpuPlane plane) {
   HeightField f;

@@ -44,7 +44,7 @@ vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample
   vec3 c = vec3(0.0);
   if (s.w > 0.0)
     c += s.w * microsurface_traced_radiance(m, plane, hit.barycentric, n, -d, l, visibility.x, -normalize(s.fp.d_dx),
-                                            -normalize(s.fp.d_dy));
+                                            -normalize(s.fp.d_dy), s.fp.duv_dx * s.fp.size, s.fp.duv_dy * s.fp.size);
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)  // naive: s.w = 1
   if (s.w < 1.0) c += (1.0 - s.w) * microsurface_radiance(m, plane, s.fp, d, l, visibility.y, true);
 #endif

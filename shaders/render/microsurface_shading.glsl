@@ -75,15 +75,29 @@ vec3 microsurface_facet_radiance(GpuMaterial m, vec3 albedo, MicrosurfaceStatist
 // A traced hit at field texel q, shaded as the reference shades a sample (cpu/reference_renderer.cpp):
 // the colour maps at (H1)-(H2), Lambert and the facet's own Beckmann lobe with the micro-normal n
 // (unit, facing the viewer); v, l in world space. filtered averages the lobe over the pixel, whose
-// neighbouring views are v_x and v_y (eq. P2 of docs/microsurface_filtering.md); naive takes it at v.
+// neighbouring views are v_x and v_y and whose texels one pixel step away are q +- dq_dx, q +- dq_dy, where the
+// field's normals have turned (eqs. P2, P3 of docs/microsurface_filtering.md); naive takes it at v and n.
 vec3 microsurface_traced_radiance(GpuMaterial m, GpuPlane plane, vec2 q, vec3 n, vec3 v, vec3 l, float visibility,
-                                  vec3 v_x, vec3 v_y) {
-  vec3 point = heightfield_point(heightfield_quads(m), q, m.albedo.w);
+                                  vec3 v_x, vec3 v_y, vec2 dq_dx, vec2 dq_dy) {
+  uint quads = heightfield_quads(m);
+  vec3 point = heightfield_point(quads, q, m.albedo.w);
   vec3 albedo = microsurface_height_colour(m, point.x) * microsurface_slope_colour(m, point.yz);
   vec3 c = lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility, globals.ambient.rgb);
   if (!kMicrosurfaceLobes || m.kind.y == 0u || visibility == 0.0) return c;
-  float f_cos = kTextureMethod >= 3u ? beckmann_facet_specular_over_pixel(n, plane.tangent.xyz, v, l, m.params.xy, v_x, v_y)
-                                     : beckmann_facet_specular(n, plane.tangent.xyz, v, l, m.params.xy);
+  float f_cos;
+  if (kTextureMethod >= 3u) {
+    // n faces the viewer, the field's normals lie on the plane's upper side: the neighbours' follow n's side
+    float side = dot(n, plane.normal.xyz) < 0.0 ? -1.0 : 1.0;
+    vec3 turned[4];  // the field's normals one pixel step away toward +x, -x, +y, -y
+    for (int k = 0; k < 4; ++k) {
+      vec2 dq = (k < 2 ? dq_dx : dq_dy) * (k % 2 == 0 ? 1.0 : -1.0);
+      turned[k] = side * normalize(heightfield_normal(plane, heightfield_point(quads, q + dq, m.albedo.w)));
+    }
+    f_cos = beckmann_facet_specular_over_pixel(n, plane.tangent.xyz, v, l, m.params.xy, v_x, v_y, turned[0], turned[1],
+                                               turned[2], turned[3]);
+  } else {
+    f_cos = beckmann_facet_specular(n, plane.tangent.xyz, v, l, m.params.xy);
+  }
   return c + globals.light_irradiance.rgb * m.albedo.rgb * (f_cos * visibility);
 }
 

@@ -102,9 +102,8 @@ Hit trace(vec3 o, vec3 d, float t_min, float t_max, bool fields) {
       GpuMaterial m = material_at(plane.material.x);
       float t = trace_height_field(i, o, d, hit.t, q);
       if (t > t_min) {
-        vec3 s = heightfield_point(heightfield_quads(m), q, m.albedo.w);
-        vec3 normal = plane.normal.xyz - s.y * plane.tangent.xyz - s.z * cross(plane.normal.xyz, plane.tangent.xyz);
-        hit = Hit(t, normal, plane.material.x, kHeightField, i, q);
+        hit = Hit(t, heightfield_normal(plane, heightfield_point(heightfield_quads(m), q, m.albedo.w)), plane.material.x,
+                  kHeightField, i, q);
       }
       continue;
     }

@@ -113,7 +113,7 @@ TEST(MicroflakePixelLobe, NarrowLobeEnergyIsKeptOverABlockOfPixels) {
 }
 
 // The radiance over a pixel of a sphere (microflake_radiance_over_pixel with the steps of
-// microflake_half_slope_step, microflake_pixel_step) against the mean of the point radiance over the pixel: the normals
+// microflake_half_slope_step, smaller_pixel_step) against the mean of the point radiance over the pixel: the normals
 // of a sphere under an orthographic pixel, whose half vector's slopes are then nearly linear, around the highlight of a
 // narrow lobe. Measured within 3.4e-3 of the highlight's peak (GGX; the others 3e-4), held to 1e-2.
 TEST(MicroflakePixelLobe, RadianceOverASpherePixelIsTheMeanOverItsNormals) {
@@ -138,8 +138,8 @@ TEST(MicroflakePixelLobe, RadianceOverASpherePixelIsTheMeanOverItsNormals) {
         mean /= double(m) * m;
         const glm::dvec3 n = normal_at(centre);
         const auto step = [&](glm::dvec2 offset) {
-          return k64::microflake_pixel_step(k64::microflake_half_slope_step(n, v, l, normal_at(centre + offset), v),
-                                            k64::microflake_half_slope_step(n, v, l, normal_at(centre - offset), v));
+          return k64::smaller_pixel_step(k64::microflake_half_slope_step(n, v, l, normal_at(centre + offset), v),
+                                         k64::microflake_half_slope_step(n, v, l, normal_at(centre - offset), v));
         };
         const glm::dvec4 steps(step(glm::dvec2(pixel, 0.0)), step(glm::dvec2(0.0, pixel)));
         const double got = k64::microflake_radiance_over_pixel(ndf, param, albedo, n, v, l, E, 1.0, ambient, steps).x;
@@ -196,7 +196,7 @@ TEST(MicroflakePixelLobe, ExtremeInputsStayFinite) {
   const glm::dvec3 v = glm::normalize(glm::dvec3(0.0, -0.999, 0.001)),
                    below = glm::normalize(v - glm::dvec3(0, 0, 0.01));
   const glm::dvec2 outward = k64::microflake_half_slope_step(n, v, l, glm::dvec3(0.0, -1.0, 0.0), below);
-  const glm::dvec4 steps(k64::microflake_pixel_step(outward, glm::dvec2(1e30)), outward);
+  const glm::dvec4 steps(k64::smaller_pixel_step(outward, glm::dvec2(1e30)), outward);
   EXPECT_TRUE(std::isfinite(steps.x) && std::isfinite(steps.y) && std::isfinite(steps.z) && std::isfinite(steps.w));
   for (int ndf : {NDF_BECKMANN, NDF_GGX, NDF_KK, NDF_SG}) {
     const glm::dvec3 r = k64::microflake_radiance_over_pixel(ndf, 0.01, glm::dvec3(1.0), n, v, l, glm::dvec3(1.0), 1.0,
