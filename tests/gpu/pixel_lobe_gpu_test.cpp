@@ -42,6 +42,23 @@ std::vector<double> run_probe(vk::Context& context, const char* name, std::span<
   return values;
 }
 
+// The largest error of `device` against `expected(i)` over consecutive cases of `per_case` probes, each relative
+// to its case's largest expected value (the first `cases * per_case` probes).
+template <class Expected>
+double worst_relative_error(const std::vector<double>& device, size_t cases, size_t per_case, Expected expected) {
+  double worst = 0.0;
+  for (size_t c = 0; c < cases; ++c) {
+    double peak = 0.0, largest_error = 0.0;
+    for (size_t i = c * per_case; i < (c + 1) * per_case; ++i) {
+      const double value = expected(i);
+      peak = std::max(peak, value);
+      largest_error = std::max(largest_error, std::abs(device[i] - value));
+    }
+    worst = std::max(worst, largest_error / peak);
+  }
+  return worst;
+}
+
 std::vector<double> run_on_device(vk::Context& context, const std::vector<Probe>& probes) {
   std::vector<glm::vec4> records;
   for (const Probe& p : probes) {
@@ -76,19 +93,10 @@ TEST(PixelLobeGpu, DeviceFollowsTheDoubleTwin) {
       for (glm::dvec2 offset : {glm::dvec2(0.0), glm::dvec2(0.3, -0.2), glm::dvec2(1e3, 1e3)})
         probes.push_back({offset, {steps.x, steps.y}, {steps.z, steps.w}, cov, 1e-20});
   const std::vector<double> device = run_on_device(*context, probes);
-  const size_t per_shape = regular / std::size(shapes);
-  double worst = 0.0;
-  for (size_t s = 0; s < std::size(shapes); ++s) {
-    double peak = 0.0, largest_error = 0.0;
-    for (size_t i = s * per_shape; i < (s + 1) * per_shape; ++i) {
-      const Probe& p = probes[i];
-      const double expected =
-          k64::microsurface_pixel_slope_density(p.offset, p.step_x, p.step_y, glm::dvec2(0.0), p.cov, p.det_min);
-      peak = std::max(peak, expected);
-      largest_error = std::max(largest_error, std::abs(device[i] - expected));
-    }
-    worst = std::max(worst, largest_error / peak);
-  }
+  const double worst = worst_relative_error(device, std::size(shapes), regular / std::size(shapes), [&](size_t i) {
+    const Probe& p = probes[i];
+    return k64::microsurface_pixel_slope_density(p.offset, p.step_x, p.step_y, glm::dvec2(0.0), p.cov, p.det_min);
+  });
   std::printf("device vs double: %.2e of the peak\n", worst);
   EXPECT_LT(worst, 1e-4);
   for (size_t i = regular; i < probes.size(); ++i)
@@ -137,18 +145,11 @@ TEST(PixelLobeGpu, MicroflakeLobeFollowsTheDoubleTwin) {
           records.emplace_back(static_cast<float>(ndf), 0.0f, 0.0f, 0.0f);
         }
   const std::vector<double> device = run_probe(*context, "microflake_lobe_probe", microflake_lobe_probe_spv, records);
-  double worst = 0.0;
-  for (size_t c = 0; c < cases.size(); ++c) {
-    double peak = 0.0, largest_error = 0.0;
-    for (size_t i = c * per_case; i < (c + 1) * per_case; ++i) {
-      const double expected =
-          k64::microflake_D_over_pixel(cases[c].ndf, static_cast<float>(cases[c].param),
-                                       glm::dvec3(glm::vec3(inputs[i].first)), glm::dvec4(glm::vec4(inputs[i].second)));
-      peak = std::max(peak, expected);
-      largest_error = std::max(largest_error, std::abs(device[i] - expected));
-    }
-    worst = std::max(worst, largest_error / peak);
-  }
+  const double worst = worst_relative_error(device, cases.size(), per_case, [&](size_t i) {
+    const Case& c = cases[i / per_case];  // the inputs as the device gets them, in float
+    return k64::microflake_D_over_pixel(c.ndf, static_cast<float>(c.param), glm::dvec3(glm::vec3(inputs[i].first)),
+                                        glm::dvec4(glm::vec4(inputs[i].second)));
+  });
   std::printf("microflake lobe, device vs double: %.2e of the peak\n", worst);
   EXPECT_LT(worst, 1e-4);
   for (size_t i = regular; i < device.size(); ++i)
