@@ -11,8 +11,7 @@ std::vector<std::string> idle_option_warnings(const Scene& scene, const gpu::Ren
   std::vector<std::string> warnings;
   // filtered:adaptive still refines geometric edges there (the error estimate's edge term); filtered averages
   // microflake lobes over the pixel (docs/microflake_brdf.md), which mip and colormip leave at its centre.
-  const bool filters = method.texture == gpu::RenderMethod::Texture::Filtered ||
-                       method.texture == gpu::RenderMethod::Texture::FilteredTable;
+  const bool filters = method.filters();
   if (method.texture != gpu::RenderMethod::Texture::Naive && method.adaptive_samples_per_axis == 0 &&
       !features.colormap_texture && !features.microsurface && !(filters && features.microflake)) {
     const std::string strata = method.samples_per_axis > 1 ? "ss:" + std::to_string(method.samples_per_axis) : "naive";

@@ -42,9 +42,7 @@ uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method) {
   if (uses<MicrosurfaceMaterial>(scene)) code |= FACET_CODE_MICROSURFACE;
   if (!scene.spheres.empty()) code |= FACET_CODE_SPHERES;
   if (!scene.meshes.empty()) code |= FACET_CODE_TRIANGLES;
-  const bool filtered =
-      method.texture == RenderMethod::Texture::Filtered || method.texture == RenderMethod::Texture::FilteredTable;
-  if (filtered && (code & (FACET_CODE_TEXTURE | FACET_CODE_MICROSURFACE | FACET_CODE_MICROFLAKE)) != 0)
+  if (method.filters() && (code & (FACET_CODE_TEXTURE | FACET_CODE_MICROSURFACE | FACET_CODE_MICROFLAKE)) != 0)
     code |= FACET_CODE_FILTERED;
   if ((code & FACET_CODE_DIFFRACTION) != 0) {
     const diffraction::DiffractionMethod diffraction = scene_diffraction_method(scene, method.diffraction);

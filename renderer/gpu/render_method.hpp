@@ -45,6 +45,9 @@ struct RenderMethod {
   // Throws facet::Error naming the known methods for anything else.
   static RenderMethod parse(const std::string& text);
   std::string name() const;  // the canonical text, as parse() reads it
+  // The filtered family (filtered, filtered:table, per stratum and adaptive): footprint statistics for
+  // textures and microsurfaces, lobes averaged over the pixel for microflakes.
+  bool filters() const { return texture == Texture::Filtered || texture == Texture::FilteredTable; }
   // Whether the pass can write its per-pixel error estimate (`--aov error`, docs/error_estimate.md):
   // the filtered family (filtered, filtered:ss:K, filtered:adaptive).
   bool estimates_error() const { return texture == Texture::Filtered; }

@@ -14,8 +14,9 @@
 
 #define MICROFLAKE_LOBE_COMPONENTS 8
 
-// Component k of the distribution's slope density near its peak as (weight, per-axis variance) of an
-// isotropic normal density of the slopes (eq. F1; weight 0: no component):
+// The distribution's slope density near its peak as a mixture of isotropic normal densities of the slopes
+// (eq. F1): component k (weight, per-axis variance) = (e^-mu mu du, scale/mu) for GGX, (e^-mu du / L, scale/mu)
+// for KK, mu = exp(lo + (k + 1/2) du), k < components; Beckmann and SG are their one core component.
 //   Beckmann: N(0, alpha^2/2), exact;
 //   SG: D ~ kappa/(2 pi) exp(-kappa theta^2/2) near the pole, N(0, 1/kappa);
 //   GGX: (1 + r^2/alpha^2)^-2/(pi alpha^2) = integral e^-l N(0, alpha^2/(2 l)) dl
@@ -23,19 +24,35 @@
 //   KK: D ~ 1/(pi L (c^2 + r^2)), c^2 = 2(1 - b)/b, = (1/L) integral e^-mu N(0, c^2/(2 mu)) d(log mu),
 //       mu from c^2 (slopes of about 1, where the pole's form ends) to 20;
 // both integrals by the midpoint rule in the logarithm, MICROFLAKE_LOBE_COMPONENTS steps, the components a
-// factor of at most 2.7 apart in width.
-inline real2 microflake_lobe_component(int ndf, real param, int k) {
+// factor of at most 2.7 apart in width. core_variance: the core's, alpha^2/2 (Beckmann, SG, GGX) or c^2/2 (KK),
+// the scale below which the mixture's residual varies (eq. F2).
+struct MicroflakeLobeMixture {
+  bool single;  // Beckmann, SG: the core is the one component
+  bool ggx;
+  int components;
+  real lo, du, kk_norm, variance_scale, core_variance;  // kk_norm: KK's L
+};
+
+inline MicroflakeLobeMixture microflake_lobe_mixture(int ndf, real param) {
+  real core = real(0.5) * param * param;
   if (ndf == NDF_BECKMANN || ndf == NDF_SG)
-    return k == 0 ? real2(1, real(0.5) * param * param) : real2(0, 1);
+    return MicroflakeLobeMixture(true, false, 1, real(0), real(0), real(1), core, core);
   bool ggx = ndf == NDF_GGX;
   real b = ndf_kk_clamp_b(param);
   real c2 = real(2) * (real(1) - b) / b;  // KK's pole width squared
   real lo = ggx ? log(real(1e-3)) : log(c2), hi = log(real(20));
-  if (!(lo < hi)) return real2(0, 1);  // a KK lobe a radian wide or more: no pole to filter
-  real du = (hi - lo) / real(MICROFLAKE_LOBE_COMPONENTS);
-  real mu = exp(lo + (real(k) + real(0.5)) * du);
-  if (ggx) return real2(exp(-mu) * mu * du, real(0.5) * param * param / mu);
-  return real2(exp(-mu) * du / ndf_kk_norm(b), real(0.5) * c2 / mu);
+  int components = lo < hi ? MICROFLAKE_LOBE_COMPONENTS : 0;  // a KK lobe a radian wide or more: no pole to filter
+  return MicroflakeLobeMixture(false, ggx, components, lo, (hi - lo) / real(MICROFLAKE_LOBE_COMPONENTS),
+                               ggx ? real(1) : ndf_kk_norm(b), ggx ? core : real(0.5) * c2,
+                               ggx ? core : (real(1) - b) / b);
+}
+
+// Component k < mixture.components as (weight, per-axis variance).
+inline real2 microflake_lobe_component(MicroflakeLobeMixture mixture, int k) {
+  if (mixture.single) return real2(1, mixture.core_variance);
+  real mu = exp(mixture.lo + (real(k) + real(0.5)) * mixture.du);
+  real weight = mixture.ggx ? exp(-mu) * mu * mixture.du : exp(-mu) * mixture.du / mixture.kk_norm;
+  return real2(weight, mixture.variance_scale / mu);
 }
 
 // The point of the parallelogram s0 + a k1 + b k2, a, b in [-1/2, 1/2], nearest the origin (the lobe's peak).
@@ -54,14 +71,6 @@ inline real2 microflake_nearest_slope(real2 s0, real2 k1, real2 k2) {
     best = dot(q, q) < dot(best, best) ? q : best;
   }
   return best;
-}
-
-// The per-axis slope variance of the distribution's core, alpha^2/2 (Beckmann, SG, GGX) or c^2/2 (KK):
-// the scale below which its mixture's residual varies (eq. F2).
-inline real microflake_lobe_core_variance(int ndf, real param) {
-  if (ndf != NDF_KK) return real(0.5) * param * param;
-  real b = ndf_kk_clamp_b(param);
-  return (real(1) - b) / b;
 }
 
 // D(h) averaged over the pixel whose half-vector slopes (in the normal's frame, relative to the pixel's own
@@ -86,20 +95,20 @@ inline real microflake_D_over_pixel(int ndf, real param, real3 h, real4 pixel_st
   real residual = D * h2 * h2, mixture = real(0), core = real(0), core_point = real(0);
   // One call of the pixel density in a loop of the distribution's count (lavapipe inlines each call site,
   // and would unroll a loop of constant trips): the components, then the core where it is none of them.
-  bool single = ndf == NDF_BECKMANN || ndf == NDF_SG;  // its one component is its core
-  int trips = single ? 1 : MICROFLAKE_LOBE_COMPONENTS + 1;
-  real v_core = microflake_lobe_core_variance(ndf, param);
+  MicroflakeLobeMixture lobe = microflake_lobe_mixture(ndf, param);
+  int trips = lobe.single ? 1 : lobe.components + 1;
   for (int k = 0; k < trips; ++k) {
-    bool is_core = k == MICROFLAKE_LOBE_COMPONENTS;
-    real2 c = is_core ? real2(0, v_core) : microflake_lobe_component(ndf, param, k);
+    bool is_core = !lobe.single && k == lobe.components;
+    real2 c = is_core ? real2(0, lobe.core_variance) : microflake_lobe_component(lobe, k);
     real v = c.y;
     real pixel = microsurface_pixel_slope_density(s, step_x, step_y, real2(0), real3(v, v, 0), v * v);
     real point = real(0.5) * FACET_INV_PI * exp(real(-0.5) * dot(s, s) / v) / v;
     mixture += c.x * pixel;
     residual -= c.x * point;
-    core = is_core || single ? pixel : core;
-    core_point = is_core || single ? point : core_point;
+    core = is_core || lobe.single ? pixel : core;
+    core_point = is_core || lobe.single ? point : core_point;
   }
+  real v_core = lobe.core_variance;
   real g = core < core_point ? core / core_point : real(1);
   real2 near = microflake_nearest_slope(s, step_x, step_y);
   real2 outward = s - near;

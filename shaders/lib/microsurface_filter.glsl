@@ -201,19 +201,19 @@ inline real microsurface_slope_ndf(real3 h, real2 mean, real3 cov, real det_min,
   return real(0.5) * FACET_INV_PI * exp(real(-0.5) * q) / (sqrt(det) * h2 * h2);
 }
 
-// The slope -h.xy/h.z of the half vector of l and v (unit, l.z > 0), h.z kept at least 1e-3 |h|: a view
-// below the horizon (a neighbouring pixel's, at grazing angles) gives a large, finite slope.
-inline real2 microsurface_half_slope(real3 l, real3 v) {
-  real3 h = l + v;
-  real hz = max(h.z, real(1e-3) * length(h));
-  return real2(-h.x / hz, -h.y / hz);
+// The slope of the direction w (-w.xy/w.z), w.z kept at least 1e-3 |w|: a view or normal below the horizon
+// (a neighbouring pixel's, at grazing angles or beyond a silhouette) gives a large, finite slope.
+inline real2 horizon_safe_slope(real3 w) {
+  real z = max(w.z, real(1e-3) * length(w));
+  return real2(-w.x / z, -w.y / z);
 }
 
 // The half vector's slope steps over a pixel (xy: toward the neighbouring pixel along x, zw: along y):
-// l, v in the lobe's frame, v_x and v_y the views one pixel step away (the neighbouring camera rays).
+// l, v in the lobe's frame (l.z > 0), v_x and v_y the views one pixel step away (the neighbouring camera
+// rays); each half vector's slope is that of l + v.
 inline real4 microsurface_pixel_half_slope_steps(real3 l, real3 v, real3 v_x, real3 v_y) {
-  real2 s = microsurface_half_slope(l, v);
-  return real4(microsurface_half_slope(l, v_x) - s, microsurface_half_slope(l, v_y) - s);
+  real2 s = horizon_safe_slope(l + v);
+  return real4(horizon_safe_slope(l + v_x) - s, horizon_safe_slope(l + v_y) - s);
 }
 
 // The slope covariance (var_x, var_y, c_xy) of a Beckmann lobe of roughness alpha: N(0, alpha^2/2).
@@ -245,13 +245,6 @@ inline real microsurface_specular(MicrosurfaceStatistics s, real2 alpha, real3 l
 // mirrored it swept a highlight into pixels that have none (docs/microflake_brdf.md, F3).
 inline real2 smaller_pixel_step(real2 to_plus, real2 to_minus) {
   return dot(to_plus, to_plus) <= dot(to_minus, to_minus) ? to_plus : -to_minus;
-}
-
-// The slope of the unit direction w (-w.xy/w.z), w.z kept at least 1e-3 |w|: a neighbouring normal or view
-// near the horizon gives a large, finite slope.
-inline real2 horizon_safe_slope(real3 w) {
-  real z = max(w.z, real(1e-3) * length(w));
-  return real2(-w.x / z, -w.y / z);
 }
 
 // beckmann_facet_specular with D averaged over the pixel (eq. P2): the facet's Beckmann slopes

@@ -33,7 +33,7 @@ struct Probe {
 std::vector<double> run_probe(vk::Context& context, const char* name, std::span<const uint32_t> spirv,
                               std::vector<glm::vec4> records) {
   vk::Buffer buffer = vk::Buffer::from(context, std::span<const glm::vec4>(records));
-  vk::Kernel kernel(context, {.name = name, .spirv = spirv, .buffer_count = 1});
+  vk::Kernel kernel(context, {.name = name, .spirv = spirv, .buffer_count = 1, .specialization = {}});
   const vk::Buffer* bindings[] = {&buffer};
   kernel.dispatch(bindings, nullptr, {static_cast<uint32_t>((records.size() / 3 + 63) / 64), 1, 1});
   buffer.download(records.data(), records.size() * sizeof(glm::vec4));
