@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,9 @@ struct OrdersProbePush {
   glm::vec4 lattice0;
   glm::vec4 lattice1;
   glm::ivec4 repeats;
+  glm::vec4 pixel;
+  float pixel_reach;
+  float pad[3];
   glm::ivec4 shape;
   glm::vec4 scales;
   float lambda0_nm;
@@ -25,9 +29,11 @@ struct OrdersProbePush {
   uint32_t count;
 };
 
+// pixel_steps: the mean over a pixel whose (u, v) moves by them per pixel step (evaluate_orders' argument).
 inline ProbeRun run_orders_probe(vk::Context& context, const diffraction::SpectralTables& tables,
                                  const diffraction::OrderWavelengths& plan,
-                                 const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs) {
+                                 const std::vector<std::pair<glm::dvec3, glm::dvec3>>& pairs,
+                                 std::optional<glm::dvec4> pixel_steps = std::nullopt) {
   std::vector<glm::vec4> observer;
   for (const glm::dvec3& o : plan.observer) observer.emplace_back(glm::vec3(o), 0.0f);
   const std::vector<glm::vec2> coefficients = tables.coefficients_f32();
@@ -37,7 +43,10 @@ inline ProbeRun run_orders_probe(vk::Context& context, const diffraction::Spectr
   const gpu::DiffractionTableInfo info = gpu::table_info(tables);
   const OrdersProbePush push{glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach),
                              glm::vec4(L.k_min, L.k_max, L.peak_step, L.max_step),
-                             glm::ivec4(L.repeats, 0, 0),
+                             glm::ivec4(L.repeats, L.pixel_budget, pixel_steps ? 1 : 0),
+                             glm::vec4(pixel_steps.value_or(glm::dvec4(0.0))),
+                             float(L.pixel_reach),
+                             {},
                              info.shape,
                              info.scales,
                              float(plan.lambda0_nm),

@@ -10,14 +10,18 @@ std::vector<std::string> idle_option_warnings(const Scene& scene, const gpu::Ren
   const std::string source = scene.source.string();
   std::vector<std::string> warnings;
   // filtered:adaptive still refines geometric edges there (the error estimate's edge term); filtered averages
-  // microflake lobes over the pixel (docs/microflake_brdf.md), which mip and colormip leave at its centre.
+  // microflake lobes (docs/microflake_brdf.md) and the orders of gratings rendered by `orders`
+  // (docs/diffraction_fast_paths.md) over the pixel, which mip and colormip leave at its centre.
   const bool filters = method.filters();
+  const bool orders = method.diffraction.method
+                          ? features.diffraction && *method.diffraction.method == diffraction::DiffractionMethod::Orders
+                          : features.diffraction_orders;
   if (method.texture != gpu::RenderMethod::Texture::Naive && method.adaptive_samples_per_axis == 0 &&
-      !features.colormap_texture && !features.microsurface && !(filters && features.microflake)) {
+      !features.colormap_texture && !features.microsurface && !(filters && (features.microflake || orders))) {
     const std::string strata = method.samples_per_axis > 1 ? "ss:" + std::to_string(method.samples_per_axis) : "naive";
     warnings.push_back("facet: warning: " + source + " has no colormap_texture or microsurface material" +
-                       (filters ? " (nor microflake)" : "") + ": --method " + method.name() + " renders it as " +
-                       strata);
+                       (filters ? " (nor microflake, nor a grating rendered by orders)" : "") + ": --method " +
+                       method.name() + " renders it as " + strata);
   }
   if (!diffraction_options.empty() && !features.diffraction) {
     std::string given;

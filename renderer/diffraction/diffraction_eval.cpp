@@ -31,6 +31,18 @@ DiffractionField window_sum(const SpectralTables& t, const DiffractionGeometry& 
   return field;
 }
 
+// Bin j's Taylor sum (C.1).
+DiffractionTaylor bin_taylor(const SpectralTables& t, const DiffractionGeometry& g, int jx, int jy) {
+  auto coefficient = [&](int n) {
+    const DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, t.J, t.stored_terms);
+    const std::complex<double> c = e.conjugate ? std::conj(t.coefficients[e.index]) : t.coefficients[e.index];
+    return real2(c.real(), c.imag());
+  };
+  DiffractionTaylor taylor = diffraction_taylor_start(g, coefficient(0));
+  for (int n = 1; n < t.N; ++n) taylor = diffraction_taylor_step(taylor, g, coefficient(n));
+  return taylor;
+}
+
 DiffractionResult result(const SpectralTables& t, const DiffractionGeometry& g, const DiffractionField& field) {
   const DiffractionValue v = diffraction_value(g, field, t.sigma_nm, t.R0);
   return {v.brdf, v.P2};
@@ -49,16 +61,15 @@ void validate_query(const DiffractionQuery& q) {
 
 DiffractionResult evaluate_taylor(const SpectralTables& t, const DiffractionQuery& q, glm::ivec2 bin_stride) {
   const DiffractionGeometry g = geometry(t, q);
-  auto coefficient = [&](int n, int jx, int jy) {
-    const DiffractionTableEntry e = diffraction_table_entry(n, jx, jy, t.J, t.stored_terms);
-    const std::complex<double> c = e.conjugate ? std::conj(t.coefficients[e.index]) : t.coefficients[e.index];
-    return real2(c.real(), c.imag());
-  };
-  return result(t, g, window_sum(t, g, bin_stride, [&](int jx, int jy) {
-                  DiffractionTaylor taylor = diffraction_taylor_start(g, coefficient(0, jx, jy));
-                  for (int n = 1; n < t.N; ++n) taylor = diffraction_taylor_step(taylor, g, coefficient(n, jx, jy));
-                  return taylor;
-                }));
+  return result(t, g, window_sum(t, g, bin_stride, [&](int jx, int jy) { return bin_taylor(t, g, jx, jy); }));
+}
+
+DiffractionResult evaluate_bin(const SpectralTables& t, const DiffractionQuery& q, glm::ivec2 j) {
+  const DiffractionGeometry g = geometry(t, q);
+  DiffractionField field{real2(0.0), real2(0.0)};
+  if (diffraction_table_entry(0, j.x, j.y, t.J, 1).valid)
+    field = diffraction_field_add(field, 1.0, bin_taylor(t, g, j.x, j.y));
+  return result(t, g, field);
 }
 
 double exact_phase_w(const DiffractionQuery& q) { return std::min(-(q.wi.z + q.wr.z), -1e-9); }

@@ -31,9 +31,9 @@ int repeats_along(const Grating& g, int dx, int dy) {
   return 1;
 }
 
-// F.10: orders per axis whose reach meets the segment k (u, v) at |(u, v)| = 2, multiplied.
-double worst_orders(const DiffractionOrderLattice& L) {
-  const double extent = 2.0 * (L.k_max - L.k_min) + 2.0 * L.reach;
+// F.10: orders per axis whose reach (widened by a pixel's, O3) meets the segment k (u, v) at |(u, v)| = 2, multiplied.
+double worst_orders(const DiffractionOrderLattice& L, double pixel_reach) {
+  const double extent = 2.0 * (L.k_max - L.k_min) + 2.0 * (L.reach + pixel_reach);
   return (extent / L.frequency.x + 1.0) * (extent / L.frequency.y + 1.0);
 }
 
@@ -82,7 +82,10 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
   // neither (measured: 5e-3 of the colour at the full steps, 2e-4 at half, tol 1e-3).
   L.peak_step = 0.5 * std::numbers::pi * std::sqrt(2.0 / std::log(4.0 / tolerance));
   L.max_step = 0.5 * observer_spacing(tolerance, light);
-  plan.worst_orders = worst_orders(L);
+  L.pixel_reach = kPixelWindows / L.sigma_nm;
+  L.pixel_budget = kPixelNodeBudget;
+  plan.worst_orders = worst_orders(L, 0.0);
+  plan.worst_orders_over_pixel = worst_orders(L, L.pixel_reach);
   plan.expected_nodes = expected_nodes(L);
   plan.most_nodes = most_nodes(L, plan.worst_orders);
   plan.restricted =
@@ -95,24 +98,38 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
 }
 
 glm::dvec3 evaluate_orders(const SpectralTables& tables, const OrderWavelengths& plan, const glm::dvec3& wi,
-                           const glm::dvec3& wr) {
+                           const glm::dvec3& wr, std::optional<glm::dvec4> pixel_steps) {
   if (!plan.restricted)  // the spectral path, as the shader runs it
     return integrate_linear_srgb(plan.fallback, [&](double l) { return evaluate_taylor(tables, {wi, wr, l}).brdf; });
   const DiffractionOrderLattice& L = plan.lattice;
-  auto brdf = [&](double lambda) { return evaluate_taylor(tables, {wi, wr, lambda}, L.repeats).brdf; };
   const glm::dvec2 uv = -glm::dvec2(wi.x + wr.x, wi.y + wr.y);
-  const DiffractionOrderSpan span = diffraction_order_span(L, uv);
+  const glm::dvec4 steps = pixel_steps ? diffraction_pixel_steps(L, *pixel_steps) : glm::dvec4(0.0);
+  const glm::dvec2 half_extent = diffraction_pixel_half_extent(steps);
+  const double r = glm::length(half_extent);
+  // Over the pixel each order's own bin weighed by its window's mean (O2), else the window sum and F.8's share.
+  auto weighed = [&](double lambda, glm::ivec2 j) {
+    if (pixel_steps)
+      return evaluate_bin(tables, {wi, wr, lambda}, j * L.repeats).brdf *
+             diffraction_window_over_pixel(L, uv, steps, j, 2.0 * std::numbers::pi / lambda);
+    return evaluate_taylor(tables, {wi, wr, lambda}, L.repeats).brdf * diffraction_order_share(L, uv, lambda, j);
+  };
+  const DiffractionOrderSpan span = diffraction_order_span(L, uv, half_extent);
+  int wanted = 0;
+  for (int c = 0; c < diffraction_order_candidates(span); ++c)
+    wanted += diffraction_order_interval(L, uv, diffraction_order_candidate(span, c), r).nodes;
+  const int budget = pixel_steps ? L.pixel_budget : wanted;
   const int entries = static_cast<int>(plan.observer.size());
   glm::dvec3 xyz(0.0);
   for (int c = 0; c < diffraction_order_candidates(span); ++c) {  // the shader's order of summation
     const glm::ivec2 j = diffraction_order_candidate(span, c);
-    const DiffractionOrderInterval I = diffraction_order_interval(L, uv, j);
+    const DiffractionOrderInterval I =
+        diffraction_order_interval_within(diffraction_order_interval(L, uv, j, r), wanted, budget);
     for (int i = 0; i < I.nodes; ++i) {
       const double lambda = diffraction_order_lambda(I, i);
       const DiffractionObserverLookup o = diffraction_observer_lookup(lambda, plan.lambda0_nm, entries);
       if (!o.valid) continue;
       const glm::dvec3 observer = glm::mix(plan.observer[o.index], plan.observer[o.index + 1], o.f);
-      xyz += (brdf(lambda) * diffraction_order_share(L, uv, lambda, j) * I.step) * observer;
+      xyz += (weighed(lambda, j) * I.step) * observer;
     }
   }
   return spectral_xyz_to_linear_srgb(xyz);

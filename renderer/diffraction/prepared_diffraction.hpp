@@ -22,6 +22,9 @@ struct DiffractionSettings {
   // The most bytes of `preintegrated` words one render-pass binding holds: 0 for the device's limit;
   // tests lower it to split small tables (gpu/preintegrated_slices.hpp).
   std::uint64_t preintegrated_binding_bytes = 0;
+  // The filtered methods: `orders` takes each pixel's mean (docs/diffraction_fast_paths.md, eqs. O1-O3),
+  // whose loop bound the pass checks instead of the point walk's.
+  bool over_pixel = false;
 };
 
 struct PreparedDiffraction {

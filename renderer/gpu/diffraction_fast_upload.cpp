@@ -36,7 +36,7 @@ DiffractionMethod scene_diffraction_method(const Scene& scene, const diffraction
 
 void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
                        std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
-                       DiffractionMethod method, std::uint64_t max_bytes) {
+                       DiffractionMethod method, bool over_pixel, std::uint64_t max_bytes) {
   const auto& source = std::get<DiffractionMaterial>(scene.materials[scene_material]);
   if (method == DiffractionMethod::Preintegrated) {
     const std::uint64_t used = data.preintegrated_word_count * sizeof(std::uint32_t);
@@ -67,16 +67,17 @@ void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, con
     const diffraction::OrderWavelengths plan = diffraction::plan_order_wavelengths(
         *source.grating, prepared.tables, source.tolerance, source.illuminant, prepared.samples);
     if (!plan.restricted) return;  // fast_scalars.z = 0: the pass runs the spectral path
-    const long iterations = order_loop_iterations(plan, prepared.tables);
+    const long iterations = order_loop_iterations(plan, prepared.tables, over_pixel);
     if (iterations + kTraceLoopReserve > kLoopIterationLimit)
       throw Error("diffraction material '" + scene.material_names[scene_material] + "': the orders path may need " +
                   std::to_string(iterations) + " shader loop iterations per ray; lavapipe ends a pixel's loops after " +
-                  std::to_string(kLoopIterationLimit) +
-                  ": use --diffraction spectral or preintegrated, or a larger tolerance");
+                  std::to_string(kLoopIterationLimit) + ": use --diffraction spectral or preintegrated" +
+                  (over_pixel ? ", a method that does not filter," : "") + " or a larger tolerance");
     const auto& L = plan.lattice;
     material.order_lattice0 = glm::vec4(glm::vec2(L.frequency), L.sigma_nm, L.reach);
     material.order_lattice1 = glm::vec4(L.k_min, L.k_max, L.peak_step, L.max_step);
-    material.order_repeats = glm::ivec4(L.repeats, 0, 0);
+    material.order_repeats = glm::ivec4(L.repeats, L.pixel_budget, 0);
+    material.fast_scalars.w = static_cast<float>(L.pixel_reach);
     material.fast_offsets.z = static_cast<std::uint32_t>(data.observer.size());
     material.fast_offsets.w = static_cast<std::uint32_t>(plan.observer.size());
     material.fast_scalars.y = static_cast<float>(plan.lambda0_nm);

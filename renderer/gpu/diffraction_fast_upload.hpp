@@ -53,10 +53,11 @@ struct FastPathData {
 // and appends its data to `data`: the `orders` tables, or the place of the preintegrated tables, which
 // are refused (facet::Error, one line with the sizes) when `data` would exceed max_bytes of device memory.
 // A grating that is not periodic gets periodic = 0, and the pass then runs the spectral path for it
-// under `orders`. `prepared` must outlive `data`.
+// under `orders`. over_pixel: `orders` runs over the pixel (its loop bound is that walk's). `prepared`
+// must outlive `data`.
 void append_fast_paths(FastPathData& data, GpuDiffractionMaterial& material, const Scene& scene,
                        std::uint32_t scene_material, const diffraction::PreparedDiffraction& prepared,
-                       diffraction::DiffractionMethod method, std::uint64_t max_bytes);
+                       diffraction::DiffractionMethod method, bool over_pixel, std::uint64_t max_bytes);
 
 struct PreintegratedWords {
   std::vector<vk::Buffer> buffers;  // one per slice

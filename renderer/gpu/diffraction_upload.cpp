@@ -28,8 +28,13 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
   return static_cast<long>(prepared.samples.lambda_nm.size()) * (1 + bins * bin_loop_iterations(prepared.tables));
 }
 
-long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables) {
+long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables,
+                           bool over_pixel) {
   const auto& L = plan.lattice;
+  if (over_pixel) {  // two passes over the candidates, at most budget + candidates nodes of one bin each (O3)
+    const long candidates = static_cast<long>(std::ceil(plan.worst_orders_over_pixel));
+    return 2 * candidates + (L.pixel_budget + candidates) * (2 + bin_loop_iterations(tables));
+  }
   const glm::dvec2 radius = glm::floor(glm::dvec2(L.reach) / L.frequency + 0.5);  // diffraction_order_share's
   const long share = static_cast<long>((2 * radius.y + 1) * (2 * radius.x + 2));  // rows, each with its columns
   const glm::ivec2 bins = 2 * tables.r / L.repeats + 1;                           // lattice bins per axis, at most
@@ -64,7 +69,8 @@ DiffractionPlan plan_diffraction(const vk::Context& context, const Scene& scene,
     GpuDiffractionMaterial entry{};  // the fast paths' fields stay zero unless their method fills them
     entry.table = table_info(prepared->tables);
     entry.offsets = glm::uvec4(plan.coefficients.size(), plan.wavelengths.size(), s.lambda_nm.size(), 0);
-    append_fast_paths(plan.fast, entry, scene, static_cast<uint32_t>(i), *prepared, plan.method, table_memory);
+    append_fast_paths(plan.fast, entry, scene, static_cast<uint32_t>(i), *prepared, plan.method, settings.over_pixel,
+                      table_memory);
     plan.materials.push_back(entry);
     plan.most_wavelengths = std::max(plan.most_wavelengths, static_cast<int>(s.lambda_nm.size()));
     plan.most_taylor = std::max(plan.most_taylor, prepared->tables.N);

@@ -48,8 +48,10 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
 // The same bound for the `orders` walk (render/diffraction_orders.glsl) of a restricted plan: the
 // candidates' first pass, then per node (at most F.13's, over F.10's candidates) the
 // walk and its advance, the share's loops over the orders within reach, and the lattice bins'
-// Taylor sums (docs/diffraction_fast_paths.md, "Loop limit").
-long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables);
+// Taylor sums (docs/diffraction_fast_paths.md, "Loop limit"); over_pixel (`filtered`, eq. O3): F.10's
+// candidates with a pixel's reach (two passes), then at most pixel_budget + candidates nodes of one bin's Taylor sum.
+long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables,
+                           bool over_pixel);
 
 // What the pass needs of the scene's diffraction before any table is read or built: the method and the
 // preintegrated words' layout (the pipeline's specialization), and the host data the upload places. The

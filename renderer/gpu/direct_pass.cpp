@@ -225,7 +225,7 @@ int tile_count(int width, int height, int tile_size) {
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
                        PhaseTimings* timings)
     : DirectPass(context, scene, method, tile_size, timings, timed(timings, "diffraction", [&] {
-                   return plan_diffraction(context, runnable(scene, method), method.diffraction);
+                   return plan_diffraction(context, runnable(scene, method), method.pass_diffraction());
                  })) {}
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,

@@ -42,8 +42,6 @@ uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method) {
   if (uses<MicrosurfaceMaterial>(scene)) code |= FACET_CODE_MICROSURFACE;
   if (!scene.spheres.empty()) code |= FACET_CODE_SPHERES;
   if (!scene.meshes.empty()) code |= FACET_CODE_TRIANGLES;
-  if (method.filters() && (code & (FACET_CODE_TEXTURE | FACET_CODE_MICROSURFACE | FACET_CODE_MICROFLAKE)) != 0)
-    code |= FACET_CODE_FILTERED;
   if ((code & FACET_CODE_DIFFRACTION) != 0) {
     const diffraction::DiffractionMethod diffraction = scene_diffraction_method(scene, method.diffraction);
     if (diffraction == diffraction::DiffractionMethod::Preintegrated) code |= FACET_CODE_DIFFRACTION_PREINTEGRATED;
@@ -51,6 +49,11 @@ uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method) {
     // `orders` runs the spectral path where restricting does not pay (F.10, F.11).
     if (diffraction != diffraction::DiffractionMethod::Preintegrated) code |= FACET_CODE_DIFFRACTION_SPECTRAL;
   }
+  // The filtered methods' code: textures' footprints, microsurfaces' statistics, microflake lobes and
+  // `orders` over the pixel.
+  constexpr uint32_t kFilterable =
+      FACET_CODE_TEXTURE | FACET_CODE_MICROSURFACE | FACET_CODE_MICROFLAKE | FACET_CODE_DIFFRACTION_ORDERS;
+  if (method.filters() && (code & kFilterable) != 0) code |= FACET_CODE_FILTERED;
   return code;
 }
 

@@ -46,8 +46,15 @@ struct RenderMethod {
   static RenderMethod parse(const std::string& text);
   std::string name() const;  // the canonical text, as parse() reads it
   // The filtered family (filtered, filtered:table, per stratum and adaptive): footprint statistics for
-  // textures and microsurfaces, lobes averaged over the pixel for microflakes.
+  // textures and microsurfaces, lobes averaged over the pixel for microflakes, and for diffraction's
+  // `orders` each order's mean over the pixel.
   bool filters() const { return texture == Texture::Filtered || texture == Texture::FilteredTable; }
+  // The diffraction settings the pass plans with: `diffraction`, over the pixel when the method filters.
+  diffraction::DiffractionSettings pass_diffraction() const {
+    diffraction::DiffractionSettings settings = diffraction;
+    settings.over_pixel = filters();
+    return settings;
+  }
   // Whether the pass can write its per-pixel error estimate (`--aov error`, docs/error_estimate.md):
   // the filtered family (filtered, filtered:ss:K, filtered:adaptive).
   bool estimates_error() const { return texture == Texture::Filtered; }

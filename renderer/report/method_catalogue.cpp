@@ -14,15 +14,18 @@ bool always(const SceneFeatures&) { return true; }
 bool has_subpixel_detail(const SceneFeatures& f) { return f.colormap_texture || f.microsurface; }
 
 // filtered (per stratum and adaptive too) also averages a microflake lobe over the pixel
-// (docs/microflake_brdf.md, "The lobe over the pixel"); mip and colormip have nothing to add there.
-bool has_filtered_detail(const SceneFeatures& f) { return has_subpixel_detail(f) || f.microflake; }
+// (docs/microflake_brdf.md, "The lobe over the pixel") and a grating's orders under `orders`
+// (docs/diffraction_fast_paths.md, "Orders over the pixel"); mip and colormip have nothing to add there.
+bool has_filtered_detail(const SceneFeatures& f) {
+  return has_subpixel_detail(f) || f.microflake || f.diffraction_orders;
+}
 
 bool has_diffraction(const SceneFeatures& f) { return f.diffraction; }
 
 // ss:8 and ss:16 trace 64 and 256 rays per pixel, each through the whole spectral loop on a
-// diffraction scene: 2-9 minutes per 320 px frame on lavapipe, times the repeats. ss:2 and ss:4
-// show the trend there; the fast paths are measured against the spectral path instead.
-bool affordable_supersampling(const SceneFeatures& f) { return !f.diffraction; }
+// diffraction scene rendered by the spectral path: 2-9 minutes per 320 px frame on lavapipe, times the
+// repeats. ss:2 and ss:4 show the trend there; the fast paths are measured against the spectral path instead.
+bool affordable_supersampling(const SceneFeatures& f) { return !f.diffraction_spectral; }
 
 }  // namespace
 
@@ -35,7 +38,11 @@ SceneFeatures scene_features(const Scene& scene) {
           if constexpr (std::is_same_v<M, ColormapTextureMaterial>) features.colormap_texture = true;
           if constexpr (std::is_same_v<M, MicrosurfaceMaterial>) features.microsurface = true;
           if constexpr (std::is_same_v<M, MicroflakeMaterial>) features.microflake = true;
-          if constexpr (std::is_same_v<M, DiffractionMaterial>) features.diffraction = true;
+          if constexpr (std::is_same_v<M, DiffractionMaterial>) {
+            features.diffraction = true;
+            features.diffraction_orders |= m.method == diffraction::DiffractionMethod::Orders;
+            features.diffraction_spectral |= m.method == diffraction::DiffractionMethod::Spectral;
+          }
         },
         material);
   }

@@ -17,6 +17,8 @@ struct SceneFeatures {
   bool microsurface = false;
   bool microflake = false;
   bool diffraction = false;
+  bool diffraction_orders = false;    // a grating rendered by `orders` (its own "method")
+  bool diffraction_spectral = false;  // a grating rendered by the spectral path
 };
 SceneFeatures scene_features(const Scene& scene);
 

@@ -24,8 +24,8 @@ struct GpuDiffractionMaterial {
   uvec4 fast_offsets;          // first table word, first term scale, first observer entry, observer entries
   vec4 order_lattice0;         // frequency.xy (1/nm), sigma (nm), reach (1/nm)
   vec4 order_lattice1;         // k_min, k_max, peak_step, max_step (nm)
-  vec4 fast_scalars;           // R0 of the tables, observer lambda0 (nm), 1 if periodic (orders usable), -
-  ivec4 order_repeats;         // the lattice's repeats (P_x, P_y), -, -
+  vec4 fast_scalars;           // R0 of the tables, observer lambda0 (nm), 1 if periodic (orders usable), pixel reach (1/nm)
+  ivec4 order_repeats;         // the lattice's repeats (P_x, P_y), nodes of a pixel's orders at most over it, -
 };
 
 #endif

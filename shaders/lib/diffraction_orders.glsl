@@ -6,10 +6,13 @@
 // integral is taken over those intervals only, each with a midpoint rule in wavelength fine enough for its peak
 // (eq. F.9), and a partition of unity over the orders (eq. F.8) keeps overlapping intervals from
 // counting any wavenumber twice. Each side evaluates the per-wavelength BRDF (diffraction_brdf.glsl)
-// at the nodes and looks up the observer table itself.
+// at the nodes and looks up the observer table itself. Over a pixel (`filtered`; eqs. O1-O3) the pixel's
+// (u, v) is a parallelogram: the intervals and the span widen to every wavenumber at which some of it meets
+// an order's reach, and each order's window is averaged over it (diffraction_window_over_pixel).
 #ifndef FACET_DIFFRACTION_ORDERS_GLSL
 #define FACET_DIFFRACTION_ORDERS_GLSL
 #include "lib/prelude.glsl"
+#include "lib/normal_over_parallelogram.glsl"
 
 struct DiffractionOrderLattice {
   real2 frequency;   // 2 pi / (T_x, T_y): the spacing of the grating's orders [1/nm]
@@ -20,7 +23,22 @@ struct DiffractionOrderLattice {
   real peak_step;    // midpoint step of a Gaussian peak in units of its standard deviation (eq. F.9)
   real max_step;     // largest step in wavelength that still resolves the observer and the light [nm]
   ivec2 repeats;     // (P_x, P_y): the patch holds P periods per axis, so its DFT bins are non-zero only at multiples of P
+  real pixel_reach;  // over a pixel: k_max times the radius of the (u, v) disc it may cover, at most [1/nm] (O3)
+  int pixel_budget;  // over a pixel: midpoint nodes of all its orders, at most (O3)
 };
+
+// The change of (u, v) per pixel step along x (xy) and y (zw), both shrunk alike so that the disc holding
+// the pixel's parallelogram reaches at most L.pixel_reach / k_max (eq. O3: a pixel spanning more, at a
+// silhouette, is averaged over that much of itself).
+inline real2 diffraction_pixel_half_extent(real4 steps) {
+  return real(0.5) * (abs(real2(steps.x, steps.y)) + abs(real2(steps.z, steps.w)));
+}
+
+inline real4 diffraction_pixel_steps(DiffractionOrderLattice L, real4 steps) {
+  real r = length(diffraction_pixel_half_extent(steps));
+  real most = L.pixel_reach / L.k_max;
+  return r > most ? steps * (most / r) : steps;
+}
 
 // The orders j in [lo, hi] (per axis) whose reach can meet the segment k (u, v), k in [k_min, k_max].
 struct DiffractionOrderSpan {
@@ -28,9 +46,11 @@ struct DiffractionOrderSpan {
   ivec2 hi;
 };
 
-inline DiffractionOrderSpan diffraction_order_span(DiffractionOrderLattice L, real2 uv) {
-  real2 a = min(L.k_min * uv, L.k_max * uv) - real2(L.reach, L.reach);
-  real2 b = max(L.k_min * uv, L.k_max * uv) + real2(L.reach, L.reach);
+// half_extent: the pixel's (u, v) lies within uv +- half_extent (0 for a point).
+inline DiffractionOrderSpan diffraction_order_span(DiffractionOrderLattice L, real2 uv, real2 half_extent) {
+  real2 lo = uv - half_extent, hi = uv + half_extent;
+  real2 a = min(min(L.k_min * lo, L.k_max * lo), min(L.k_min * hi, L.k_max * hi)) - real2(L.reach, L.reach);
+  real2 b = max(max(L.k_min * lo, L.k_max * lo), max(L.k_min * hi, L.k_max * hi)) + real2(L.reach, L.reach);
   return DiffractionOrderSpan(ivec2(ceil(a / L.frequency)), ivec2(floor(b / L.frequency)));
 }
 
@@ -55,37 +75,63 @@ struct DiffractionOrderInterval {
   int nodes;
 };
 
-inline DiffractionOrderInterval diffraction_order_interval(DiffractionOrderLattice L, real2 uv, ivec2 j) {
+// r: the pixel's (u, v) lies within the disc of radius r about uv (0 for a point).
+inline DiffractionOrderInterval diffraction_order_interval(DiffractionOrderLattice L, real2 uv, ivec2 j, real r) {
   real2 alpha = real2(j) * L.frequency;
-  // |k uv - alpha|^2 <= rho^2  <=>  |uv|^2 k^2 - 2 (uv.alpha) k + |alpha|^2 - rho^2 <= 0   (F.7)
+  // |k uv - alpha|^2 <= rho^2  <=>  |uv|^2 k^2 - 2 (uv.alpha) k + |alpha|^2 - rho^2 <= 0   (F.7); over the
+  // disc, |k uv - alpha| <= rho + k r  <=>  (|uv|^2 - r^2) k^2 - 2 (uv.alpha + rho r) k + |alpha|^2 - rho^2 <= 0 (O1)
   real uu = dot(uv, uv);
-  real b = dot(uv, alpha);
+  real a = uu - r * r;
+  real b = dot(uv, alpha) + L.reach * r;
   real c = dot(alpha, alpha) - L.reach * L.reach;
   real lo = L.k_min;
   real hi = L.k_max;
-  if (uu > real(0)) {
-    real disc = b * b - uu * c;
+  if (a > real(0)) {
+    real disc = b * b - a * c;
     real root = sqrt(max(disc, real(0)));
-    lo = disc < real(0) ? L.k_max : max(lo, (b - root) / uu);
-    hi = disc < real(0) ? L.k_min : min(hi, (b + root) / uu);
-  } else if (c > real(0)) {
+    lo = disc < real(0) ? L.k_max : max(lo, (b - root) / a);
+    hi = disc < real(0) ? L.k_min : min(hi, (b + root) / a);
+  } else if (c > real(0) && !(r > real(0))) {
     hi = lo;  // at (u, v) = 0 only the orders within rho of the origin are seen, at every k
-  }
+  }  // a disc holding (u, v) = 0: every k (the set is the complement of an interval; its hull)
   if (!(hi > lo)) return DiffractionOrderInterval(real(0), real(0), 0);
   // |S|^2 carries the squared window exp(-sigma^2 |k uv - alpha|^2): a Gaussian in k of standard
   // deviation 1 / (sqrt(2) sigma |uv|), i.e. lambda^2 / (2 pi) times that in wavelength, narrowest
-  // at the interval's short end.
+  // at the interval's short end and, over a pixel, at its (u, v) farthest from 0.
+  real farthest = sqrt(uu) + r;
   real lambda_lo = real(2) * FACET_PI / hi;
   real lambda_hi = real(2) * FACET_PI / lo;
-  real deviation = uu > real(0) ? lambda_lo * lambda_lo / (real(2) * FACET_PI * FACET_SQRT2 * L.sigma_nm * sqrt(uu))
-                                 : L.max_step;
+  real deviation = farthest > real(0)
+                       ? lambda_lo * lambda_lo / (real(2) * FACET_PI * FACET_SQRT2 * L.sigma_nm * farthest)
+                       : L.max_step;
   real step = min(L.peak_step * deviation, L.max_step);
   int nodes = int(ceil((lambda_hi - lambda_lo) / step));
   return DiffractionOrderInterval(lambda_lo, (lambda_hi - lambda_lo) / real(nodes), nodes);
 }
 
+// O3: a pixel whose orders' intervals hold `total` nodes, more than `budget`, gets each order's nodes cut
+// alike to floor(nodes budget / total), at least 1, over the same interval (a coarser midpoint rule): its
+// walk then takes at most budget + (its orders) nodes.
+inline DiffractionOrderInterval diffraction_order_interval_within(DiffractionOrderInterval I, int total, int budget) {
+  if (total <= budget || I.nodes == 0) return I;
+  int nodes = max(1, int(real(I.nodes) * (real(budget) / real(total))));
+  return DiffractionOrderInterval(I.lambda_lo, I.step * (real(I.nodes) / real(nodes)), nodes);
+}
+
 inline real diffraction_order_lambda(DiffractionOrderInterval I, int i) {
   return I.lambda_lo + (real(i) + real(0.5)) * I.step;
+}
+
+// Eq. O2: order j's squared window exp(-sigma^2 |k uv - alpha_j|^2) averaged over the pixel's (u, v),
+// uv + a steps.xy + b steps.zw (a, b uniform in [-1/2, 1/2]). In uv it is 2 pi c N(uv; alpha_j / k, c I),
+// c = 1 / (2 sigma^2 k^2), whose mean over the parallelogram normal_density_over_parallelogram takes
+// (exact for a point and for orthogonal steps).
+inline real diffraction_window_over_pixel(DiffractionOrderLattice L, real2 uv, real4 steps, ivec2 j, real k) {
+  real c = real(0.5) / (L.sigma_nm * L.sigma_nm * k * k);
+  real2 centre = real2(j) * L.frequency / k;
+  return real(2) * FACET_PI * c *
+         normal_density_over_parallelogram(uv, real2(steps.x, steps.y), real2(steps.z, steps.w), centre,
+                                           real3(c, c, real(0)), c * c);
 }
 
 // Eq. F.8: order j's share of the wavenumber k = 2 pi / lambda, e_j / sum_j' e_j' over the orders

@@ -3,7 +3,7 @@
 // so the half vector sweeps a patch of the normal frame's slopes; a lobe narrower than that patch, taken at
 // the pixel's centre alone, is a highlight that aliases. Each distribution's slope density near its peak is
 // a mixture of normal densities (exact for Beckmann), averaged exactly over the pixel's parallelogram of slopes
-// (microsurface_pixel_slope_density); what the mixture misses is taken at the centre where the pixel is small.
+// (normal_density_over_parallelogram); what the mixture misses is taken at the centre where the pixel is small.
 #ifndef FACET_MICROFLAKE_PIXEL_LOBE_GLSL
 #define FACET_MICROFLAKE_PIXEL_LOBE_GLSL
 #include "lib/prelude.glsl"
@@ -79,7 +79,7 @@ inline real2 microflake_nearest_slope(real2 s0, real2 k1, real2 k2) {
 //   s_h = s_near + (s - s_near) v/(v + |s - s_near|^2)   (v: the core's variance),
 //   R(s) = D(h) h_z^4 - sum_k w_k N_k(s)   (the slope density less its mixture, at the pixel's centre),
 //   g = min(1, <N_core>_pixel / N_core(s)),
-// kept at least 0. The mixture's mean over the pixel is exact (microsurface_pixel_slope_density); its residual
+// kept at least 0. The mixture's mean over the pixel is exact (normal_density_over_parallelogram); its residual
 // R, which varies on the core's scale, is taken at the centre where the pixel is small against the core
 // (g = 1) and fades where the pixel averages the core away (g -> 0; R integrates to about 0). D is the slope
 // density over h_z^4, taken where the pixel's share of the lobe lies: at the centre for a pixel small against
@@ -101,7 +101,7 @@ inline real microflake_D_over_pixel(int ndf, real param, real3 h, real4 pixel_st
     bool is_core = !lobe.single && k == lobe.components;
     real2 c = is_core ? real2(0, lobe.core_variance) : microflake_lobe_component(lobe, k);
     real v = c.y;
-    real pixel = microsurface_pixel_slope_density(s, step_x, step_y, real2(0), real3(v, v, 0), v * v);
+    real pixel = normal_density_over_parallelogram(s, step_x, step_y, real2(0), real3(v, v, 0), v * v);
     real point = real(0.5) * FACET_INV_PI * exp(real(-0.5) * dot(s, s) / v) / v;
     mixture += c.x * pixel;
     residual -= c.x * point;

@@ -21,14 +21,29 @@ struct OrderObserver {
 // nodes. Here every lane walks its own nodes in ONE loop of its total count (a cheap first pass
 // over the candidates' intervals), moving on to its next order whenever one is used up; a group
 // then costs its busiest lane's total. Same terms, same order as evaluate_orders (the C++ twin).
+// over_pixel (a constant of each call site): the colour's mean over the pixel whose (u, v) moves by
+// pixel_steps.xy and .zw per pixel step (eqs. O1-O3, docs/diffraction_fast_paths.md): each order's own
+// bin weighed by its window's mean over the pixel, orders apart (the window sum's cross terms and the
+// shares of F.8 belong to overlapping orders, which a grating this path runs does not have: F.11).
 vec3 diffraction_orders_xyz(DiffractionOrderLattice L, DiffractionTableInfo info, uint first_coefficient,
-                            OrderObserver o, vec3 wi, vec3 wr) {
+                            OrderObserver o, vec3 wi, vec3 wr, bool over_pixel, vec4 pixel_steps) {
   vec2 uv = -(wi.xy + wr.xy);
-  DiffractionOrderSpan span = diffraction_order_span(L, uv);
+  vec4 steps = over_pixel ? diffraction_pixel_steps(L, pixel_steps) : vec4(0.0);
+  vec2 half_extent = diffraction_pixel_half_extent(steps);
+  float r = length(half_extent);
+  DiffractionOrderSpan span = diffraction_order_span(L, uv, half_extent);
   int candidates = diffraction_order_candidates(span);
-  int total = 0;
+  int wanted = 0;
   for (int c = 0; c < candidates; ++c)
-    total += diffraction_order_interval(L, uv, diffraction_order_candidate(span, c)).nodes;
+    wanted += diffraction_order_interval(L, uv, diffraction_order_candidate(span, c), r).nodes;
+  int budget = over_pixel ? L.pixel_budget : wanted;
+  int total = wanted;
+  if (wanted > budget) {  // O3: every order's nodes cut alike
+    total = 0;
+    for (int c = 0; c < candidates; ++c)
+      total += diffraction_order_interval_within(diffraction_order_interval(L, uv, diffraction_order_candidate(span, c), r),
+                                                 wanted, budget).nodes;
+  }
   vec3 xyz = vec3(0.0);
   int c = -1, i = 0;
   ivec2 j = span.lo;
@@ -36,7 +51,7 @@ vec3 diffraction_orders_xyz(DiffractionOrderLattice L, DiffractionTableInfo info
   for (int t = 0; t < total; ++t, ++i) {
     while (i >= I.nodes && c + 1 < candidates) {  // the next order with nodes (the guard: c stays a candidate)
       j = diffraction_order_candidate(span, ++c);
-      I = diffraction_order_interval(L, uv, j);
+      I = diffraction_order_interval_within(diffraction_order_interval(L, uv, j, r), wanted, budget);
       i = 0;
     }
     float lambda = diffraction_order_lambda(I, i);
@@ -44,8 +59,12 @@ vec3 diffraction_orders_xyz(DiffractionOrderLattice L, DiffractionTableInfo info
     if (!look.valid) continue;
     vec3 observer = mix(diffraction_observer_at(o.first + uint(look.index)).xyz,
                         diffraction_observer_at(o.first + uint(look.index) + 1u).xyz, look.f);
-    float brdf = diffraction_taylor_value(info, first_coefficient, wi, wr, lambda, L.repeats).brdf;
-    xyz += (brdf * diffraction_order_share(L, uv, lambda, j) * I.step) * observer;
+    float weighed = over_pixel
+                        ? diffraction_bin_value(info, first_coefficient, wi, wr, lambda, j * L.repeats).brdf *
+                              diffraction_window_over_pixel(L, uv, steps, j, 2.0 * FACET_PI / lambda)
+                        : diffraction_taylor_value(info, first_coefficient, wi, wr, lambda, L.repeats).brdf *
+                              diffraction_order_share(L, uv, lambda, j);
+    xyz += (weighed * I.step) * observer;
   }
   return xyz;
 }

@@ -38,8 +38,11 @@ vec3 diffraction_spectral_xyz(GpuDiffractionMaterial m, vec3 wi, vec3 wr) {
 #endif
 
 // Radiance diffracted toward v by diffraction material `index` at a point with shading normal n
-// (facing the viewer) and tangent dpdu, lit from l with the light's visibility.
-vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float visibility) {
+// (facing the viewer) and tangent dpdu, lit from l with the light's visibility. over_pixel (a constant of
+// the call site): `orders` takes the mean over the pixel whose (u, v) moves by pixel_steps per pixel step
+// (eqs. O1-O3 of docs/diffraction_fast_paths.md); the other methods take the colour at the pixel's centre.
+vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float visibility, bool over_pixel,
+                         vec4 pixel_steps) {
   DiffractionDirections d = diffraction_directions(n, dpdu, l, v);
   if (!d.lit || visibility == 0.0) return vec3(0.0);
   GpuDiffractionMaterial m = diffraction_material_at(index);
@@ -61,9 +64,10 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
         DiffractionOrderLattice lattice = DiffractionOrderLattice(m.order_lattice0.xy, m.order_lattice0.z, m.order_lattice0.w,
                                                                   m.order_lattice1.x, m.order_lattice1.y,
                                                                   m.order_lattice1.z, m.order_lattice1.w,
-                                                                  m.order_repeats.xy);
+                                                                  m.order_repeats.xy, m.fast_scalars.w, m.order_repeats.z);
         OrderObserver observer = OrderObserver(m.fast_offsets.z, int(m.fast_offsets.w), m.fast_scalars.y);
-        rgb = spectral_xyz_to_linear_srgb(diffraction_orders_xyz(lattice, m.table, m.offsets.x, observer, d.wi, d.wr));
+        rgb = spectral_xyz_to_linear_srgb(
+            diffraction_orders_xyz(lattice, m.table, m.offsets.x, observer, d.wi, d.wr, over_pixel, pixel_steps));
         break;
       }
       // Not restricted: on to the spectral path, one call site of it for both methods (each call site of

@@ -43,6 +43,12 @@ DiffractionTaylor diffraction_taylor_sum(DiffractionTaylor t, DiffractionGeometr
 }
 #undef FACET_DIFFRACTION_GUARDED_STEP
 
+// Bin j's Taylor sum sum_n (i x)^n / n! H_n(j) (C.1).
+DiffractionTaylor diffraction_bin_taylor(DiffractionTableInfo info, uint first, DiffractionGeometry g, ivec2 j) {
+  DiffractionTaylor t = diffraction_taylor_start(g, diffraction_coefficient(info, first, 0, j.x, j.y));
+  return diffraction_taylor_sum(t, g, info, first, j.x, j.y);
+}
+
 // wi, wr: unit vectors toward the light and the viewer in the grating's frame, z >= 0. bin_stride:
 // (1, 1) visits every bin of the window; a periodic patch's repeats visit only its lattice
 // (lib/diffraction_brdf.glsl, diffraction_window_bins).
@@ -57,9 +63,20 @@ DiffractionValue diffraction_taylor_value(DiffractionTableInfo info, uint first,
     ivec2 j = diffraction_window_bin(bins, b);
     if (!diffraction_table_entry(0, j.x, j.y, J, 1).valid) continue;
     float weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(j.x, j.y, T), sigma);
-    DiffractionTaylor t = diffraction_taylor_start(g, diffraction_coefficient(info, first, 0, j.x, j.y));
-    field = diffraction_field_add(field, weight, diffraction_taylor_sum(t, g, info, first, j.x, j.y));
+    field = diffraction_field_add(field, weight, diffraction_bin_taylor(info, first, g, j));
   }
+  return diffraction_value(g, field, sigma, info.scales.w);
+}
+
+// Bin j's term of the window sum alone, with weight 1: the BRDF of one order whose window the caller
+// weighs (the orders over a pixel, eq. O2 of docs/diffraction_fast_paths.md; C++ twin evaluate_bin).
+DiffractionValue diffraction_bin_value(DiffractionTableInfo info, uint first, vec3 wi, vec3 wr, float lambda_nm,
+                                       ivec2 j) {
+  float sigma = info.scales.y;
+  DiffractionGeometry g = diffraction_geometry(wi, wr, lambda_nm, sigma, info.scales.z);
+  DiffractionField field = DiffractionField(vec2(0.0), vec2(0.0));
+  if (diffraction_table_entry(0, j.x, j.y, info.shape.x, 1).valid)
+    field = diffraction_field_add(field, 1.0, diffraction_bin_taylor(info, first, g, j));
   return diffraction_value(g, field, sigma, info.scales.w);
 }
 

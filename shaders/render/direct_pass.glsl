@@ -107,6 +107,37 @@ vec3 camera_ray(vec2 film) {
                               vec2(globals.image.xy));
 }
 
+// The camera ray through the neighbouring pixel k (0: +x, 1: -x, 2: +y, 3: -y), `pixel_step` away on the film:
+// the pixel's parallelogram of normals and views for the lobes and orders taken over the pixel.
+vec3 neighbouring_camera_ray(vec2 film, float pixel_step, int k) {
+  return camera_ray(film + (k < 2 ? vec2(pixel_step, 0.0) : vec2(0.0, pixel_step)) * (k % 2 == 0 ? 1.0 : -1.0));
+}
+
+#if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION)
+// filtered averages `orders` over the pixel (docs/diffraction_fast_paths.md, "Orders over the pixel").
+const bool kFiltersOrders = FACET_VARIANT_HAS(FACET_CODE_FILTERED) && FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_ORDERS) &&
+                            kTextureMethod >= 3u && kDiffractionMethod == kDiffractionOrders;
+#endif
+
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED) && FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_ORDERS)
+// The change of a grating's (u, v) = -(wi + wr)_xy per pixel step (xy along x, zw along y), eq. O1: the
+// neighbouring camera rays' views in the frames (normal, tangent) the primitive shows them, on each axis the
+// side where (u, v) changes less (smaller_pixel_step: a silhouette's outer side is not the pixel's).
+vec4 diffraction_pixel_uv_steps(Hit hit, vec3 p, vec3 n, vec3 o, vec3 d, vec3 l, vec2 film, float pixel_step) {
+  DiffractionDirections centre = diffraction_directions(n, surface_uv(hit, p).dpdu, l, -d);
+  vec2 uv = -(centre.wi.xy + centre.wr.xy);
+  vec2 to[4];  // toward +x, -x, +y, -y
+  for (int k = 0; k < 4; ++k) {
+    vec3 d_q = neighbouring_camera_ray(film, pixel_step, k);
+    SurfaceSeenBy q = surface_seen_by(hit, p, o, d_q);
+    vec3 n_q = normalize(q.n);
+    DiffractionDirections w = diffraction_directions(dot(n_q, n) < 0.0 ? -n_q : n_q, surface_uv(hit, q.p).dpdu, l, -d_q);
+    to[k] = -(w.wi.xy + w.wr.xy) - uv;
+  }
+  return vec4(smaller_pixel_step(to[0], to[1]), smaller_pixel_step(to[2], to[3]));
+}
+#endif
+
 // Radiance of the hit `hit` of the camera ray o + t d through `film` (pixels); `pixel_step` is the film
 // distance to the neighbouring rays whose hits span the texture footprint.
 vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
@@ -179,9 +210,8 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
     if (kTextureMethod >= 3u) {
       vec2 to[4];  // toward +x, -x, +y, -y
       for (int k = 0; k < 4; ++k) {
-        vec2 offset = (k < 2 ? vec2(pixel_step, 0.0) : vec2(0.0, pixel_step)) * (k % 2 == 0 ? 1.0 : -1.0);
-        vec3 d_q = camera_ray(film + offset);
-        vec3 n_q = normalize(shading_normal_seen_by(hit, p, o, d_q));
+        vec3 d_q = neighbouring_camera_ray(film, pixel_step, k);
+        vec3 n_q = normalize(surface_seen_by(hit, p, o, d_q).n);
         to[k] = microflake_half_slope_step(n, -d, l, dot(n_q, n) < 0.0 ? -n_q : n_q, -d_q);
       }
       steps = vec4(smaller_pixel_step(to[0], to[1]), smaller_pixel_step(to[2], to[3]));
@@ -214,8 +244,14 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
 #endif
   vec3 diffracted = vec3(0.0);  // a diffraction material's albedo is its Lambertian base
 #if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION)
-  if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION)
-    diffracted = diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility.x);
+  if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION) {
+    vec4 uv_steps = vec4(0.0);
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED) && FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_ORDERS)
+    if (kFiltersOrders) uv_steps = diffraction_pixel_uv_steps(hit, p, n, o, d, l, film, pixel_step);
+#endif
+    diffracted =
+        diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility.x, kFiltersOrders, uv_steps);
+  }
 #endif
   return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility.x, globals.ambient.rgb) + diffracted;
 }

@@ -155,34 +155,41 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float field_skip) {
   return trace_triangles(o, l, Hit(kInfinity, vec3(0.0), kNoHit, 0u, 0u, vec2(0.0)), true).material != kNoHit;
 }
 
-// The (unnormalised, any side) shading normal that the hit's primitive shows the neighbouring camera ray
-// o + t d_n, to first order for a triangle: a plane's is its own; a sphere's is exact where the ray meets it
-// and, where it passes it, the normal at its closest approach (the silhouette's, perpendicular to the ray:
-// the pixel's normals end there); a triangle's interpolates its vertex normals at the barycentrics of the
-// ray's crossing of the tangent plane at the hit p (a flat one's is its face normal). Used by the filtered
-// microflake lobe (microflake_pixel_lobe.glsl).
-vec3 shading_normal_seen_by(Hit hit, vec3 p, vec3 o, vec3 d_n) {
+// What the hit's primitive shows the neighbouring camera ray o + t d_n, to first order for a triangle: a point
+// and the (unnormalised, any side) shading normal there. A plane's normal is its own; a sphere's is exact where
+// the ray meets it and, where it passes it, the normal at its closest approach (the silhouette's, perpendicular
+// to the ray: the pixel's normals end there); a triangle's interpolates its vertex normals at the barycentrics
+// of the ray's crossing of the tangent plane at the hit p (a flat one's is its face normal); the point is where
+// the ray meets the tangent plane (a sphere: the point of that normal). Used by the filtered microflake lobe
+// (microflake_pixel_lobe.glsl) and the diffraction orders over the pixel (render/diffraction_pixel.glsl).
+struct SurfaceSeenBy {
+  vec3 p;
+  vec3 n;
+};
+
+SurfaceSeenBy surface_seen_by(Hit hit, vec3 p, vec3 o, vec3 d_n) {
+  vec3 n = hit.normal;
+  vec3 q = o + d_n * (dot(p - o, n) / (abs(dot(d_n, n)) > 1e-8 ? dot(d_n, n) : 1e-8));
 #if FACET_VARIANT_HAS(FACET_CODE_SPHERES)
   if (kHasSpheres && hit.primitive == kSphere) {
     vec4 s = sphere_at(hit.index).center_radius;
     vec3 closest = o + d_n * dot(s.xyz - o, d_n) - s.xyz;  // from the centre to the ray's closest point
     float inside = s.w * s.w - dot(closest, closest);
-    return inside > 0.0 ? closest - d_n * sqrt(inside) : closest;
+    vec3 normal = inside > 0.0 ? closest - d_n * sqrt(inside) : closest;
+    return SurfaceSeenBy(s.xyz + normal, normal);
   }
 #endif
 #if FACET_VARIANT_HAS(FACET_CODE_TRIANGLES)
   if (kHasTriangles && hit.primitive == kTriangle) {
     GpuTriangle tri = triangle_at(hit.index);
-    vec3 n = hit.normal;
-    vec3 q = o + d_n * (dot(p - o, n) / (abs(dot(d_n, n)) > 1e-8 ? dot(d_n, n) : 1e-8));
     vec3 e1 = tri.p1.xyz - tri.p0.xyz, e2 = tri.p2.xyz - tri.p0.xyz, r = q - tri.p0.xyz;
     float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2), r1 = dot(r, e1), r2 = dot(r, e2);
     vec2 b = vec2(d22 * r1 - d12 * r2, d11 * r2 - d12 * r1) / max(d11 * d22 - d12 * d12, 1e-30);
     vec3 interpolated = (1.0 - b.x - b.y) * tri.n0.xyz + b.x * tri.n1.xyz + b.y * tri.n2.xyz;
-    return dot(tri.n0.xyz, tri.n0.xyz) == 0.0 ? n : interpolated;
+    return SurfaceSeenBy(q, dot(tri.n0.xyz, tri.n0.xyz) == 0.0 ? n : interpolated);
   }
 #endif
-  return hit.normal;
+  return SurfaceSeenBy(q, n);
 }
 
 // uv at p and the tangents dp/du, dp/dv (the conventions of renderer/cpu/ray_caster.cpp).

@@ -28,6 +28,12 @@ class CliIdleOptions : public ::testing::Test {
       ++count;
     return count;
   }
+  // Renders `scene` with `options`: it succeeds with `count` warnings.
+  void expect_warnings(const std::string& scene, const std::string& options, long count) {
+    const auto r = render(scene, options);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(warnings(r), count) << scene << " " << options << ": " << r.err;
+  }
   test::TempDir dir_;
 };
 
@@ -38,20 +44,19 @@ TEST_F(CliIdleOptions, AFootprintMethodWithoutSubPixelDetailIsSaidToDoNothing) {
     EXPECT_EQ(warnings(r), 1) << r.err;
     const bool filters = method.rfind("filtered", 0) == 0;
     EXPECT_NE(r.err.find(std::string("has no colormap_texture or microsurface material") +
-                         (filters ? " (nor microflake)" : "") + ": --method " + method + " renders it as"),
+                         (filters ? " (nor microflake, nor a grating rendered by orders)" : "") + ": --method " +
+                         method + " renders it as"),
               std::string::npos)
         << r.err;
   }
-  const auto textured = render("colormap_noise_plane.json", "--method filtered");
-  ASSERT_EQ(textured.exit_code, 0) << textured.err;
-  EXPECT_EQ(warnings(textured), 0) << textured.err;
+  expect_warnings("colormap_noise_plane.json", "--method filtered", 0);
   // filtered averages microflake lobes over the pixel; mip leaves them at its centre
-  const auto flakes = render("microflake_blend.json", "--method filtered");
-  ASSERT_EQ(flakes.exit_code, 0) << flakes.err;
-  EXPECT_EQ(warnings(flakes), 0) << flakes.err;
-  const auto flakes_mip = render("microflake_blend.json", "--method mip");
-  ASSERT_EQ(flakes_mip.exit_code, 0) << flakes_mip.err;
-  EXPECT_EQ(warnings(flakes_mip), 1) << flakes_mip.err;
+  expect_warnings("microflake_blend.json", "--method filtered", 0);
+  expect_warnings("microflake_blend.json", "--method mip", 1);
+  // filtered averages the orders of a grating rendered by `orders` over the pixel, not the spectral path's
+  expect_warnings("diffraction_spheres.json", "--method filtered", 0);
+  expect_warnings("diffraction_spheres.json", "--method filtered --diffraction spectral", 1);
+  expect_warnings("diffraction_plate.json", "--method filtered --diffraction orders", 0);
 }
 
 TEST_F(CliIdleOptions, DiffractionOptionsWithoutADiffractionMaterialAreSaidToDoNothing) {

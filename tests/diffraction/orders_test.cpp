@@ -12,6 +12,7 @@
 #include "diffraction/cie_tables.hpp"
 #include "diffraction/order_wavelengths.hpp"
 #include "diffraction_cases.hpp"
+#include "order_cases.hpp"
 #include "orders_probe.hpp"
 #include "scene/grating/grating_patterns.hpp"
 #include "support/vulkan_fixture.hpp"
@@ -20,39 +21,10 @@ namespace facet {
 namespace orders_test {
 
 using namespace diffraction;
+using namespace order_cases;
 using test::direction;
 using test::kPi;
 namespace k64 = kernels::f64;
-
-constexpr double kTolerance = 1e-3;
-
-// Coherence 8 um (twice the patch): orders narrow enough (~1/(k sigma) ~ 0.01 in u) for the
-// restriction to pay off.
-const char* kSinusoid =
-    R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":60,"size_um":4,"samples":64,"coherence_um":8})";
-const char* kRectangular =
-    R"({"type":"rectangular","period_nm":800,"amplitude_nm":40,"size_um":4,"samples":80,"coherence_um":8})";
-const char* kCrossed =
-    R"({"type":"crossed","period_nm":[1000,800],"amplitude_nm":60,"size_um":4,"samples":80,"coherence_um":8})";
-
-struct Case {
-  Grating grating;
-  SpectralTables tables;
-  OrderWavelengths plan;
-};
-
-Case make_case(Grating grating) {
-  Case c{std::move(grating), {}, {}};
-  TableRange range;
-  range.lambda_min_nm = kCieLambdaMinNm;
-  range.lambda_max_nm = kCieLambdaMaxNm;
-  c.tables = build_spectral_tables(c.grating, range);
-  c.plan = plan_order_wavelengths(c.grating, c.tables, kTolerance, Illuminant::D65,
-                                  diffraction_wavelength_samples(c.tables, kTolerance));
-  return c;
-}
-
-Case make_case(const char* json) { return make_case(test::grating(json)); }
 
 glm::dvec3 spectral(const Case& c, const WavelengthSamples& s, const glm::dvec3& wi, const glm::dvec3& wr) {
   return integrate_linear_srgb(s, [&](double l) { return evaluate_taylor(c.tables, {wi, wr, l}).brdf; });
@@ -60,11 +32,11 @@ glm::dvec3 spectral(const Case& c, const WavelengthSamples& s, const glm::dvec3&
 
 TEST(Orders, PatchRepeatsAreTheGratingsPeriods) {
   auto repeats = [](const char* json) { return patch_repeats(test::grating(json)); };
-  EXPECT_EQ(repeats(kSinusoid).x, 4);
-  EXPECT_EQ(repeats(kSinusoid).y, 64);  // constant along y
-  EXPECT_EQ(repeats(kRectangular).x, 5);
-  EXPECT_EQ(repeats(kCrossed).x, 4);
-  EXPECT_EQ(repeats(kCrossed).y, 5);
+  EXPECT_EQ(repeats(kSinusoidJson).x, 4);
+  EXPECT_EQ(repeats(kSinusoidJson).y, 64);  // constant along y
+  EXPECT_EQ(repeats(kRectangularJson).x, 5);
+  EXPECT_EQ(repeats(kCrossedJson).x, 4);
+  EXPECT_EQ(repeats(kCrossedJson).y, 5);
   // Fingers: ridges of period 1000 nm along x, rows shifted every 1000 nm along y (period 2000 nm).
   const auto fingers = repeats(R"({"type":"fingers","period_nm":1000,"amplitude_nm":80,"size_um":4,"samples":64,)"
                                R"("finger_length_nm":1000})");
@@ -93,7 +65,7 @@ TEST(Orders, PatchRepeatsOfPeriodsThatAreNotWholeSamples) {
 // Sum over the orders within the reach's radius of k (u, v) (those whose intervals can hold the
 // wavelength) of their shares is 1 (F.8), for any (u, v) and wavelength.
 TEST(Orders, SharesAreAPartitionOfUnity) {
-  const Case c = make_case(kCrossed);
+  const Case c = make_case(kCrossedJson);
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> uv(-1.5, 1.5), lambda(360.0, 830.0);
   for (int q = 0; q < 200; ++q) {
@@ -124,7 +96,7 @@ TEST(Orders, LatticeBinsCarryTheWholeWindowSum) {
   const char* narrow =
       R"({"type":"crossed","period_nm":[500,500],"amplitude_nm":40,"size_um":2,"samples":64,"coherence_um":0.5})";
   int most_lattice_bins = 0;
-  for (const char* json : {kSinusoid, kRectangular, kCrossed, plate, narrow}) {
+  for (const char* json : {kSinusoidJson, kRectangularJson, kCrossedJson, plate, narrow}) {
     const Case c = make_case(json);
     const glm::ivec2 stride = c.plan.lattice.repeats;
     ASSERT_GT(stride.x * stride.y, 1) << json;
@@ -179,18 +151,18 @@ TEST(Orders, WindowBinsAreTheStridesMultiplesInTheWindow) {
 // Every wavelength at which order j's window weight reaches the tolerance lies in j's interval
 // (and j in the span), found by a 0.02 nm scan over 360..830 nm; every node of the interval does.
 TEST(Orders, IntervalsHoldEveryReachingWavelength) {
-  const Case c = make_case(kCrossed);
+  const Case c = make_case(kCrossedJson);
   const k64::DiffractionOrderLattice& L = c.plan.lattice;
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> uv(-1.2, 1.2);
   for (int q = 0; q < 40; ++q) {
     const glm::dvec2 p(uv(rng), uv(rng));
-    const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, p);
+    const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, p, glm::dvec2(0.0));
     for (int jy = span.lo.y - 2; jy <= span.hi.y + 2; ++jy)
       for (int jx = span.lo.x - 2; jx <= span.hi.x + 2; ++jx) {
         const glm::ivec2 j(jx, jy);
         const bool in_span = jx >= span.lo.x && jx <= span.hi.x && jy >= span.lo.y && jy <= span.hi.y;
-        const k64::DiffractionOrderInterval I = k64::diffraction_order_interval(L, p, j);
+        const k64::DiffractionOrderInterval I = k64::diffraction_order_interval(L, p, j, 0.0);
         const double hi = I.lambda_lo + I.nodes * I.step;
         auto reaches = [&](double l) { return glm::length(2 * kPi / l * p - glm::dvec2(j) * L.frequency) <= L.reach; };
         for (double l = kCieLambdaMinNm; l <= kCieLambdaMaxNm; l += 0.02)
@@ -241,7 +213,7 @@ double worst_against(const Case& c, double period_x, int queries, const std::str
 }
 
 TEST(Orders, ColoursMatchTheSpectralPath) {
-  for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
+  for (const char* json : {kSinusoidJson, kRectangularJson, kCrossedJson}) {
     const Case c = make_case(json);
     ASSERT_TRUE(c.plan.restricted) << json;
     const WavelengthSamples dense = wavelength_samples(0.25);
@@ -256,7 +228,7 @@ TEST(Orders, ColoursMatchTheSpectralPath) {
 // Scanning the view across the first order (u from 0.3 to 0.8 in steps of 1e-3 at v = 0): the
 // brightest Y of each channel's peak is found at the same step by both paths.
 TEST(Orders, PeaksSitWhereTheSpectralPathPutsThem) {
-  for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
+  for (const char* json : {kSinusoidJson, kRectangularJson, kCrossedJson}) {
     const Case c = make_case(json);
     const glm::dvec3 wi = direction(0.0, 0.0);
     int argmax_orders = -1, argmax_spectral = -1;
@@ -283,10 +255,10 @@ double nodes_per_pixel(const Case& c) {
       const glm::dvec2 r(i / 21.0, j / 21.0);
       if (glm::dot(r, r) >= 1.0) continue;
       const glm::dvec2 uv = -r - glm::dvec2(wi);
-      const k64::DiffractionOrderSpan span = k64::diffraction_order_span(c.plan.lattice, uv);
+      const k64::DiffractionOrderSpan span = k64::diffraction_order_span(c.plan.lattice, uv, glm::dvec2(0.0));
       for (int jy = span.lo.y; jy <= span.hi.y; ++jy)
         for (int jx = span.lo.x; jx <= span.hi.x; ++jx)
-          nodes += k64::diffraction_order_interval(c.plan.lattice, uv, glm::ivec2(jx, jy)).nodes;
+          nodes += k64::diffraction_order_interval(c.plan.lattice, uv, glm::ivec2(jx, jy), 0.0).nodes;
       ++pixels;
     }
   return nodes / pixels;
@@ -295,7 +267,7 @@ double nodes_per_pixel(const Case& c) {
 // The work the restriction saves: nodes_per_pixel against the spectral path's wavelength count at
 // the same tolerance.
 TEST(Orders, EvaluatesFarFewerWavelengthsThanTheSpectralPath) {
-  for (const char* json : {kSinusoid, kRectangular, kCrossed}) {
+  for (const char* json : {kSinusoidJson, kRectangularJson, kCrossedJson}) {
     const Case c = make_case(json);
     const double per_pixel = nodes_per_pixel(c), spectral_count = static_cast<double>(c.plan.fallback.lambda_nm.size());
     std::printf("%s: %.1f evaluations per pixel against %.0f wavelengths\n", json, per_pixel, spectral_count);
@@ -342,7 +314,7 @@ TEST(Orders, CrossedRotatedGratingWalksItsOwnLattice) {
   EXPECT_LT(whole_nodes * 3.0, aliased_nodes);
   EXPECT_LT(whole_nodes * 3.0, spectral_count);
 
-  Grating sinusoid = test::grating(kSinusoid);
+  Grating sinusoid = test::grating(kSinusoidJson);
   sinusoid.samples = 62;
   sinusoid.sample_nm = 4000.0 / 62;
   sinusoid.height_nm = sinusoid_heights({62, sinusoid.sample_nm}, 1000.0, 60.0);
@@ -364,7 +336,7 @@ TEST(Orders, NodesPerPixelStayWithinTheirBound) {
       R"({"type":"sinusoid","period_nm":1600,"amplitude_nm":100,"size_um":8,"samples":80,"coherence_um":3.2})";
   const char* fingers = R"({"type":"fingers","period_nm":750,"amplitude_nm":80,"size_um":3,"samples":48,)"
                         R"("finger_length_nm":1500,"coherence_um":0.75})";
-  for (const char* json : {kSinusoid, kRectangular, kCrossed, plate, fingers}) {
+  for (const char* json : {kSinusoidJson, kRectangularJson, kCrossedJson, plate, fingers}) {
     const Case c = make_case(json);
     const k64::DiffractionOrderLattice& L = c.plan.lattice;
     std::mt19937 rng(14);
@@ -373,10 +345,10 @@ TEST(Orders, NodesPerPixelStayWithinTheirBound) {
     for (int q = 0; q < 4000; ++q) {
       const double scale = q % 2 ? 2.0 : 0.02;  // anywhere, or within 0.02 of specular
       const glm::dvec2 uv(scale * unit(rng), scale * unit(rng));
-      const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, uv);
+      const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, uv, glm::dvec2(0.0));
       double nodes = 0.0;
       for (int i = 0; i < k64::diffraction_order_candidates(span); ++i)
-        nodes += k64::diffraction_order_interval(L, uv, k64::diffraction_order_candidate(span, i)).nodes;
+        nodes += k64::diffraction_order_interval(L, uv, k64::diffraction_order_candidate(span, i), 0.0).nodes;
       EXPECT_LE(nodes, c.plan.most_nodes) << json << " " << uv.x << "," << uv.y;
       most = std::max(most, nodes);
     }
@@ -387,7 +359,7 @@ TEST(Orders, NodesPerPixelStayWithinTheirBound) {
 // A random height field has no period inside its patch: the plan says so and evaluate_orders is
 // exactly the spectral path on the fallback samples.
 TEST(Orders, RandomHeightFieldFallsBackToSpectral) {
-  Grating g = test::grating(kSinusoid);
+  Grating g = test::grating(kSinusoidJson);
   std::mt19937 rng(9);
   std::normal_distribution<double> height(0.0, 30.0);
   for (double& h : g.height_nm) h = height(rng);
@@ -416,7 +388,7 @@ TEST(Orders, RandomHeightFieldFallsBackToSpectral) {
 // brightest query.
 TEST(Orders, GpuMatchesTheDoubleTwin) {
   auto context = test::make_validated_context();
-  for (const char* json : {kSinusoid, kCrossed}) {
+  for (const char* json : {kSinusoidJson, kCrossedJson}) {
     const Case c = make_case(json);
     std::mt19937 rng(8);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -451,7 +423,7 @@ TEST(Orders, GpuMatchesTheDoubleTwin) {
 // queries have different spans, empty candidates and several orders: same bound as above.
 TEST(Orders, GpuMatchesTheDoubleTwinOverTheHemisphere) {
   auto context = test::make_validated_context();
-  const Case c = make_case(kCrossed);
+  const Case c = make_case(kCrossedJson);
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::vector<std::pair<glm::dvec3, glm::dvec3>> pairs;
@@ -509,9 +481,9 @@ TEST(Orders, WindowsTooWideForTheLatticeFallBackToSpectral) {
     const glm::dvec2 i(2 * unit(rng) - 1, 2 * unit(rng) - 1), r(2 * unit(rng) - 1, 2 * unit(rng) - 1);
     if (glm::dot(i, i) >= 1.0 || glm::dot(r, r) >= 1.0) continue;
     const glm::dvec2 uv = -(i + r);
-    const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, uv);
+    const k64::DiffractionOrderSpan span = k64::diffraction_order_span(L, uv, glm::dvec2(0.0));
     for (int c = 0; c < k64::diffraction_order_candidates(span); ++c)
-      nodes += k64::diffraction_order_interval(L, uv, k64::diffraction_order_candidate(span, c)).nodes;
+      nodes += k64::diffraction_order_interval(L, uv, k64::diffraction_order_candidate(span, c), 0.0).nodes;
     ++pixels;
   }
   const double spectral_count = static_cast<double>(snake.plan.fallback.lambda_nm.size());
@@ -522,14 +494,14 @@ TEST(Orders, WindowsTooWideForTheLatticeFallBackToSpectral) {
   EXPECT_FALSE(snake.plan.restricted);
   const glm::dvec3 wi = direction(0.2, 0.3), wr = direction(-0.5, 0.1);
   EXPECT_EQ(evaluate_orders(snake.tables, snake.plan, wi, wr), spectral(snake, snake.plan.fallback, wi, wr));
-  const Case sinusoid = make_case(kSinusoid);
+  const Case sinusoid = make_case(kSinusoidJson);
   EXPECT_TRUE(sinusoid.plan.restricted);
   EXPECT_LT(sinusoid.plan.expected_nodes, 1.0);
 }
 
 // Grazing and extreme directions give finite colours.
 TEST(Orders, FiniteOnTheWholeDomain) {
-  const Case c = make_case(kCrossed);
+  const Case c = make_case(kCrossedJson);
   for (double ix : {-1.0, 0.0, 0.7})
     for (double rx : {-1.0, -0.3, 0.0, 1.0})
       for (double ry : {-1.0, 0.0, 1e-12}) {

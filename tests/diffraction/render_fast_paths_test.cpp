@@ -94,7 +94,7 @@ TEST(DiffractionFastPathsRender, TablesBeyondTheDeviceLimitAreRefusedWithOneLine
   gpu::FastPathData data;
   gpu::GpuDiffractionMaterial entry{};
   try {
-    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, 4096);
+    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Preintegrated, false, 4096);
     FAIL() << "4 KiB of tables accepted";
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -122,7 +122,7 @@ TEST(DiffractionFastPathsRender, OrdersBeyondTheLoopLimitAreRefusedWithOneLine) 
   gpu::FastPathData data;
   gpu::GpuDiffractionMaterial entry{};
   try {
-    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Orders, 1u << 30);
+    gpu::append_fast_paths(data, entry, scene, 0, prepared, diffraction::DiffractionMethod::Orders, false, 1u << 30);
     FAIL() << "orders accepted";
   } catch (const Error& e) {
     const std::string message = e.what();

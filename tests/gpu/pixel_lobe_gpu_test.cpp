@@ -1,4 +1,4 @@
-// The lobe averaged over a pixel (microsurface_pixel_slope_density, eq. P2 of docs/microsurface_filtering.md;
+// The lobe averaged over a pixel (normal_density_over_parallelogram, eq. P2 of docs/microsurface_filtering.md;
 // microflake_D_over_pixel, eq. F2 of docs/microflake_brdf.md) compiled for the device
 // (tests/gpu/shaders/pixel_lobe_probe.comp, microflake_lobe_probe.comp) against the double twins on the same
 // inputs: lobes from far wider to far narrower than the pixel, square, sheared and degenerate pixels, the
@@ -95,7 +95,7 @@ TEST(PixelLobeGpu, DeviceFollowsTheDoubleTwin) {
   const std::vector<double> device = run_on_device(*context, probes);
   const double worst = worst_relative_error(device, std::size(shapes), regular / std::size(shapes), [&](size_t i) {
     const Probe& p = probes[i];
-    return k64::microsurface_pixel_slope_density(p.offset, p.step_x, p.step_y, glm::dvec2(0.0), p.cov, p.det_min);
+    return k64::normal_density_over_parallelogram(p.offset, p.step_x, p.step_y, glm::dvec2(0.0), p.cov, p.det_min);
   });
   std::printf("device vs double: %.2e of the peak\n", worst);
   EXPECT_LT(worst, 1e-4);

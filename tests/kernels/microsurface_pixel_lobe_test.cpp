@@ -67,7 +67,7 @@ TEST(MicrosurfacePixelLobe, SlopeDensityIsTheMeanOverThePixel) {
       for (double b : {0.0, 0.3, 0.5, 0.7}) {
         const glm::dvec2 s0 = mean + a * c.step_x + b * c.step_y;
         const double expected = box_average(s0, c.step_x, c.step_y, mean, c.cov, 1200);
-        const double got = k64::microsurface_pixel_slope_density(s0, c.step_x, c.step_y, mean, c.cov, 0.0);
+        const double got = k64::normal_density_over_parallelogram(s0, c.step_x, c.step_y, mean, c.cov, 0.0);
         peak = std::max(peak, expected);
         worst = std::max(worst, std::abs(got - expected));
       }
@@ -89,7 +89,7 @@ TEST(MicrosurfacePixelLobe, NarrowLobeEnergyIsKeptOverABlockOfPixels) {
     for (int i = -4; i <= 4; ++i)
       for (int j = -4; j <= 4; ++j) {
         const glm::dvec2 s0 = (i + phase.x) * step_x + (j + phase.y) * step_y;
-        over_pixels += k64::microsurface_pixel_slope_density(s0, step_x, step_y, glm::dvec2(0.0), cov, 0.0) * area;
+        over_pixels += k64::normal_density_over_parallelogram(s0, step_x, step_y, glm::dvec2(0.0), cov, 0.0) * area;
         at_centres += slope_density(s0, glm::dvec2(0.0), cov) * area;
       }
     std::printf("phase (%.1f, %.1f): block sum %.5f over pixels, %.4f at the centres\n", phase.x, phase.y, over_pixels,
@@ -184,9 +184,9 @@ TEST(MicrosurfacePixelLobe, FloatTwinFollowsDouble) {
       for (double a = -1.0; a <= 1.0; a += 0.125)
         for (double b = -1.0; b <= 1.0; b += 0.125) {
           const glm::dvec2 s0 = mean + a * step_x + b * step_y;
-          const double d64 = k64::microsurface_pixel_slope_density(s0, step_x, step_y, mean, cov, 0.0);
-          const double d32 = k32::microsurface_pixel_slope_density(glm::vec2(s0), glm::vec2(step_x), glm::vec2(step_y),
-                                                                   glm::vec2(mean), glm::vec3(cov), 0.0f);
+          const double d64 = k64::normal_density_over_parallelogram(s0, step_x, step_y, mean, cov, 0.0);
+          const double d32 = k32::normal_density_over_parallelogram(glm::vec2(s0), glm::vec2(step_x), glm::vec2(step_y),
+                                                                    glm::vec2(mean), glm::vec3(cov), 0.0f);
           peak = std::max(peak, d64);
           largest_error = std::max(largest_error, std::abs(d32 - d64));
         }
@@ -205,9 +205,9 @@ TEST(MicrosurfacePixelLobe, ExtremeInputsStayFinite) {
                              glm::dvec4(1e3, 0.0, 0.0, 1e3), glm::dvec4(1e-30, 0.0, 0.0, 1e-30)})
       for (glm::dvec2 offset : {glm::dvec2(0.0), glm::dvec2(0.3, -0.2), glm::dvec2(1e3, 1e3)}) {
         const glm::dvec2 step_x(steps.x, steps.y), step_y(steps.z, steps.w);
-        const double d64 = k64::microsurface_pixel_slope_density(offset, step_x, step_y, glm::dvec2(0.0), cov, 1e-20);
-        const float d32 = k32::microsurface_pixel_slope_density(glm::vec2(offset), glm::vec2(step_x), glm::vec2(step_y),
-                                                                glm::vec2(0.0f), glm::vec3(cov), 1e-20f);
+        const double d64 = k64::normal_density_over_parallelogram(offset, step_x, step_y, glm::dvec2(0.0), cov, 1e-20);
+        const float d32 = k32::normal_density_over_parallelogram(
+            glm::vec2(offset), glm::vec2(step_x), glm::vec2(step_y), glm::vec2(0.0f), glm::vec3(cov), 1e-20f);
         EXPECT_TRUE(std::isfinite(d64) && d64 >= 0.0) << cov.x << " " << steps.x << " " << offset.x;
         EXPECT_TRUE(std::isfinite(d32) && d32 >= 0.0f) << cov.x << " " << steps.x << " " << offset.x;
         ++checked;

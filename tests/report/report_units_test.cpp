@@ -307,8 +307,9 @@ TEST(MethodCatalogue, AppliesTextureMethodsOnlyToScenesWithSubPixelDetail) {
                                       "ss:8"}));
   EXPECT_EQ(names(select_methods(plain, false, {"ss:99", "filtered"})),
             (std::vector<std::string>{"ss:99", "filtered"}));
-  SceneFeatures grating;
+  SceneFeatures grating;  // rendered by the spectral path
   grating.diffraction = true;
+  grating.diffraction_spectral = true;
   EXPECT_EQ(
       names(select_methods(grating, true, {})),
       (std::vector<std::string>{"naive", "diffraction:spectral", "diffraction:preintegrated", "diffraction:orders",
@@ -316,6 +317,13 @@ TEST(MethodCatalogue, AppliesTextureMethodsOnlyToScenesWithSubPixelDetail) {
   const auto full = names(select_methods(grating, false, {}));
   EXPECT_EQ(full.back(), "ss:4");  // ss:8 and ss:16 would trace the spectral loop 64 and 256 times per pixel
   EXPECT_EQ(names(select_methods(grating, false, {"ss:8"})), (std::vector<std::string>{"ss:8"}));  // on request
+  SceneFeatures orders;  // filtered averages the orders over the pixel; their supersampling is affordable
+  orders.diffraction = true;
+  orders.diffraction_orders = true;
+  EXPECT_EQ(names(select_methods(orders, true, {})),
+            (std::vector<std::string>{"naive", "filtered", "filtered:ss:2", "filtered:adaptive", "diffraction:spectral",
+                                      "diffraction:preintegrated", "diffraction:orders", "wavelengths:8",
+                                      "wavelengths:16", "wavelengths:32", "ss:1", "ss:2", "ss:4", "ss:8"}));
 }
 
 TEST(MethodCatalogue, ReadsSceneFeaturesFromMaterials) {
@@ -324,6 +332,12 @@ TEST(MethodCatalogue, ReadsSceneFeaturesFromMaterials) {
   const Scene textured = load_scene(std::filesystem::path(FACET_SOURCE_DIR) / "scenes/colormap_noise_plane.json");
   EXPECT_TRUE(scene_features(textured).colormap_texture);
   EXPECT_FALSE(scene_features(textured).microsurface);
+  const Scene plate = load_scene(std::filesystem::path(FACET_SOURCE_DIR) / "scenes/diffraction_plate.json");
+  EXPECT_TRUE(scene_features(plate).diffraction_spectral);
+  EXPECT_FALSE(scene_features(plate).diffraction_orders);
+  const Scene spheres = load_scene(std::filesystem::path(FACET_SOURCE_DIR) / "scenes/diffraction_spheres.json");
+  EXPECT_TRUE(scene_features(spheres).diffraction_orders);
+  EXPECT_FALSE(scene_features(spheres).diffraction_spectral);
 }
 
 void write(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
