@@ -478,7 +478,8 @@ PreintegratedTables preintegrated_header(const SpectralTables& tables, const Wav
     throw Error("preintegrated tables: " + std::to_string(l.nu) + " x " + std::to_string(l.nv) + " (u, v) nodes x " +
                 std::to_string(l.terms) + " terms need " + format_mib(l.bytes) + ", more than the " +
                 format_mib(settings.max_bytes) +
-                " of device memory left for them; narrow the view, raise the tolerance or use --diffraction spectral");
+                " of device memory left for them; narrow the view, raise the tolerance or use --diffraction orders (a "
+                "periodic grating) or spectral");
   PreintegratedTables t;
   t.origin = l.origin;
   t.spacing = l.spacing;
