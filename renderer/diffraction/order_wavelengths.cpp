@@ -82,7 +82,11 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
   // neither (measured: 5e-3 of the colour at the full steps, 2e-4 at half, tol 1e-3).
   L.peak_step = 0.5 * std::numbers::pi * std::sqrt(2.0 / std::log(4.0 / tolerance));
   L.max_step = 0.5 * observer_spacing(tolerance, light);
-  L.pixel_reach = kPixelWindows / L.sigma_nm;
+  // O2 drops the window sum's cross terms between orders, exp(-sigma^2 f^2 / 4) of the peak at most: where they
+  // may pass the tolerance, a pixel keeps the orders at its centre (pixel_reach 0).
+  const double spacing = std::min(L.frequency.x, L.frequency.y);
+  const bool separated = L.sigma_nm * L.sigma_nm * spacing * spacing / 4.0 >= std::log(1.0 / tolerance);
+  L.pixel_reach = separated ? kPixelWindows / L.sigma_nm : 0.0;
   L.pixel_budget = kPixelNodeBudget;
   plan.worst_orders = worst_orders(L, 0.0);
   plan.worst_orders_over_pixel = worst_orders(L, L.pixel_reach);
@@ -103,12 +107,13 @@ glm::dvec3 evaluate_orders(const SpectralTables& tables, const OrderWavelengths&
     return integrate_linear_srgb(plan.fallback, [&](double l) { return evaluate_taylor(tables, {wi, wr, l}).brdf; });
   const DiffractionOrderLattice& L = plan.lattice;
   const glm::dvec2 uv = -glm::dvec2(wi.x + wr.x, wi.y + wr.y);
-  const glm::dvec4 steps = pixel_steps ? diffraction_pixel_steps(L, *pixel_steps) : glm::dvec4(0.0);
+  const bool over_pixel = pixel_steps && L.pixel_reach > 0.0;
+  const glm::dvec4 steps = over_pixel ? diffraction_pixel_steps(L, *pixel_steps) : glm::dvec4(0.0);
   const glm::dvec2 half_extent = diffraction_pixel_half_extent(steps);
   const double r = glm::length(half_extent);
   // Over the pixel each order's own bin weighed by its window's mean (O2), else the window sum and F.8's share.
   auto weighed = [&](double lambda, glm::ivec2 j) {
-    if (pixel_steps)
+    if (over_pixel)
       return evaluate_bin(tables, {wi, wr, lambda}, j * L.repeats).brdf *
              diffraction_window_over_pixel(L, uv, steps, j, 2.0 * std::numbers::pi / lambda);
     return evaluate_taylor(tables, {wi, wr, lambda}, L.repeats).brdf * diffraction_order_share(L, uv, lambda, j);
@@ -117,7 +122,7 @@ glm::dvec3 evaluate_orders(const SpectralTables& tables, const OrderWavelengths&
   int wanted = 0;
   for (int c = 0; c < diffraction_order_candidates(span); ++c)
     wanted += diffraction_order_interval(L, uv, diffraction_order_candidate(span, c), r).nodes;
-  const int budget = pixel_steps ? L.pixel_budget : wanted;
+  const int budget = over_pixel ? L.pixel_budget : wanted;
   const int entries = static_cast<int>(plan.observer.size());
   glm::dvec3 xyz(0.0);
   for (int c = 0; c < diffraction_order_candidates(span); ++c) {  // the shader's order of summation

@@ -59,7 +59,7 @@ OrderWavelengths plan_order_wavelengths(const Grating& grating, const SpectralTa
 // Linear sRGB of the BRDF integrated over the order intervals (the CPU double twin of the shader
 // path), or over `fallback` when the grating is not periodic. With pixel_steps (the change of
 // (u, v) = -(wi + wr)_xy per pixel step along x in xy, along y in zw): the mean over the pixel
-// (docs/diffraction_fast_paths.md, eqs. O1-O3).
+// (docs/diffraction_fast_paths.md, eqs. O1-O3), where the lattice's orders lie apart (pixel_reach > 0).
 glm::dvec3 evaluate_orders(const SpectralTables& tables, const OrderWavelengths& plan, const glm::dvec3& wi,
                            const glm::dvec3& wr, std::optional<glm::dvec4> pixel_steps = std::nullopt);
 

@@ -31,7 +31,8 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
 long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables,
                            bool over_pixel) {
   const auto& L = plan.lattice;
-  if (over_pixel) {  // two passes over the candidates, at most budget + candidates nodes of one bin each (O3)
+  if (over_pixel &&
+      L.pixel_reach > 0.0) {  // two passes over the candidates, at most budget + candidates nodes of one bin each (O3)
     const long candidates = static_cast<long>(std::ceil(plan.worst_orders_over_pixel));
     return 2 * candidates + (L.pixel_budget + candidates) * (2 + bin_loop_iterations(tables));
   }

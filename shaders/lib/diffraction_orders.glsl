@@ -23,7 +23,8 @@ struct DiffractionOrderLattice {
   real peak_step;    // midpoint step of a Gaussian peak in units of its standard deviation (eq. F.9)
   real max_step;     // largest step in wavelength that still resolves the observer and the light [nm]
   ivec2 repeats;     // (P_x, P_y): the patch holds P periods per axis, so its DFT bins are non-zero only at multiples of P
-  real pixel_reach;  // over a pixel: k_max times the radius of the (u, v) disc it may cover, at most [1/nm] (O3)
+  real pixel_reach;  // over a pixel: k_max times the radius of the (u, v) disc it may cover, at most [1/nm] (O3);
+                     // 0: orders too close for O2's model, a pixel takes them at its centre
   int pixel_budget;  // over a pixel: midpoint nodes of all its orders, at most (O3)
 };
 

@@ -21,12 +21,13 @@ struct OrderObserver {
 // nodes. Here every lane walks its own nodes in ONE loop of its total count (a cheap first pass
 // over the candidates' intervals), moving on to its next order whenever one is used up; a group
 // then costs its busiest lane's total. Same terms, same order as evaluate_orders (the C++ twin).
-// over_pixel (a constant of each call site): the colour's mean over the pixel whose (u, v) moves by
+// filtered (a constant of each call site): the colour's mean over the pixel whose (u, v) moves by
 // pixel_steps.xy and .zw per pixel step (eqs. O1-O3, docs/diffraction_fast_paths.md): each order's own
 // bin weighed by its window's mean over the pixel, orders apart (the window sum's cross terms and the
 // shares of F.8 belong to overlapping orders, which a grating this path runs does not have: F.11).
 vec3 diffraction_orders_xyz(DiffractionOrderLattice L, DiffractionTableInfo info, uint first_coefficient,
-                            OrderObserver o, vec3 wi, vec3 wr, bool over_pixel, vec4 pixel_steps) {
+                            OrderObserver o, vec3 wi, vec3 wr, bool filtered, vec4 pixel_steps) {
+  bool over_pixel = filtered && L.pixel_reach > 0.0;  // else orders too close for O2: the centre's colour
   vec2 uv = -(wi.xy + wr.xy);
   vec4 steps = over_pixel ? diffraction_pixel_steps(L, pixel_steps) : vec4(0.0);
   vec2 half_extent = diffraction_pixel_half_extent(steps);

@@ -208,6 +208,23 @@ TEST(OrdersOverPixel, TheNodeBudgetCutsEveryOrderAlike) {
               total, L.pixel_budget, brightest(cut - full) / brightest(full));
 }
 
+// O2 drops the cross terms between orders, up to exp(-sigma^2 f^2 / 4) of the peak: a grating whose window
+// (coherence 0.8 um) is too wide against its period (1 um) for that to stay within the tolerance
+// (sigma f = 5.0 < 2 sqrt(ln 1000) = 5.3) keeps each pixel's orders at its centre, the coherent window sum.
+TEST(OrdersOverPixel, OrdersTooCloseForTheModelStayAtTheCentre) {
+  const Case c = make_case(
+      R"({"type":"sinusoid","period_nm":1000,"amplitude_nm":60,"size_um":2,"samples":32,"coherence_um":0.8})");
+  ASSERT_TRUE(c.plan.restricted);
+  EXPECT_EQ(c.plan.lattice.pixel_reach, 0.0);
+  EXPECT_GT(make_case(kSinusoidJson).plan.lattice.pixel_reach, 0.0);
+  for (double u : {0.1, 0.45, 0.6, 1.1}) {
+    const glm::dvec3 wr = view_at(glm::dvec2(u, 0.01));
+    EXPECT_EQ(evaluate_orders(c.tables, c.plan, kLight, wr, glm::dvec4(0.02, 0.0, 0.0, 0.02)),
+              evaluate_orders(c.tables, c.plan, kLight, wr))
+        << u;
+  }
+}
+
 // Pixels at the extremes: zero, tiny and huge steps (a silhouette's: capped), (u, v) at 0 with a pixel around
 // it, grazing views: finite colours.
 TEST(OrdersOverPixel, ExtremePixelsStayFinite) {
