@@ -28,13 +28,14 @@ struct DiffractionOrderLattice {
   int pixel_budget;  // over a pixel: midpoint nodes of all its orders, at most (O3)
 };
 
-// The change of (u, v) per pixel step along x (xy) and y (zw), both shrunk alike so that the disc holding
-// the pixel's parallelogram reaches at most L.pixel_reach / k_max (eq. O3: a pixel spanning more, at a
-// silhouette, is averaged over that much of itself).
+// Half the extent per axis of the pixel's (u, v), uv + a steps.xy + b steps.zw (a, b in [-1/2, 1/2]), from
+// the change of (u, v) per pixel step along x (xy) and y (zw).
 inline real2 diffraction_pixel_half_extent(real4 steps) {
   return real(0.5) * (abs(real2(steps.x, steps.y)) + abs(real2(steps.z, steps.w)));
 }
 
+// The steps shrunk alike so that the disc holding the pixel's parallelogram reaches at most L.pixel_reach / k_max
+// (eq. O3: a pixel spanning more, at a silhouette, is averaged over that much of itself).
 inline real4 diffraction_pixel_steps(DiffractionOrderLattice L, real4 steps) {
   real r = length(diffraction_pixel_half_extent(steps));
   real most = L.pixel_reach / L.k_max;

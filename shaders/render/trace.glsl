@@ -161,7 +161,8 @@ bool occluded(vec3 o, vec3 l, Hit from, vec3 n, bool fields, float field_skip) {
 // to the ray: the pixel's normals end there); a triangle's interpolates its vertex normals at the barycentrics
 // of the ray's crossing of the tangent plane at the hit p (a flat one's is its face normal); the point is where
 // the ray meets the tangent plane (a sphere: the point of that normal). Used by the filtered microflake lobe
-// (microflake_pixel_lobe.glsl) and the diffraction orders over the pixel (render/diffraction_pixel.glsl).
+// (microflake_pixel_lobe.glsl) and the diffraction orders over the pixel (diffraction_pixel_uv_steps,
+// render/direct_pass.glsl).
 struct SurfaceSeenBy {
   vec3 p;
   vec3 n;
