@@ -18,6 +18,7 @@ std::unique_ptr<MappedFile> MappedFile::open(const std::filesystem::path& path) 
     const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
     mapped = (size + page - 1) / page * page;
     data = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE, fd, 0);
+    if (data != MAP_FAILED) ::madvise(data, size, MADV_POPULATE_READ);
   }
   ::close(fd);  // the mapping keeps the file
   if (data == MAP_FAILED) return nullptr;

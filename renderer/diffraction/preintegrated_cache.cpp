@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include <xxh_x86dispatch.h>
 #include <xxhash.h>
 
 #include "common/content_hash.hpp"
@@ -53,11 +54,12 @@ struct Header {
 
 // XXH3 (64 bits) of the file's parts in order (libxxhash): several times the speed of a multiply chain
 // over 8-byte words, so reading warm tables of hundreds of MiB costs their pages, not their check; the
-// size is checked separately.
+// size is checked separately. The library's run-time dispatch picks the host's widest vectors (AVX2,
+// AVX-512) for the same hash: 258 MiB in ~48 ms of CPU with its SSE2 default on this project's VM.
 std::uint64_t checksum(std::initializer_list<std::string_view> parts) {
   const std::unique_ptr<XXH3_state_t, decltype(&XXH3_freeState)> state(XXH3_createState(), &XXH3_freeState);
   if (!state || XXH3_64bits_reset(state.get()) != XXH_OK) throw Error("out of memory for a checksum");
-  for (std::string_view part : parts) XXH3_64bits_update(state.get(), part.data(), part.size());
+  for (std::string_view part : parts) XXH3_64bits_update_dispatch(state.get(), part.data(), part.size());
   return XXH3_64bits_digest(state.get());
 }
 
