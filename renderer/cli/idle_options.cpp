@@ -1,5 +1,6 @@
 #include "cli/idle_options.hpp"
 
+#include "gpu/diffraction_fast_upload.hpp"
 #include "report/method_catalogue.hpp"
 
 namespace facet::cli {
@@ -13,9 +14,8 @@ std::vector<std::string> idle_option_warnings(const Scene& scene, const gpu::Ren
   // microflake lobes (docs/microflake_brdf.md) and the orders of gratings rendered by `orders`
   // (docs/diffraction_fast_paths.md) over the pixel, which mip and colormip leave at its centre.
   const bool filters = method.filters();
-  const bool orders = method.diffraction.method
-                          ? features.diffraction && *method.diffraction.method == diffraction::DiffractionMethod::Orders
-                          : features.diffraction_orders;
+  const bool orders = features.diffraction && gpu::scene_diffraction_method(scene, method.diffraction) ==
+                                                  diffraction::DiffractionMethod::Orders;
   if (method.texture != gpu::RenderMethod::Texture::Naive && method.adaptive_samples_per_axis == 0 &&
       !features.colormap_texture && !features.microsurface && !(filters && (features.microflake || orders))) {
     const std::string strata = method.samples_per_axis > 1 ? "ss:" + std::to_string(method.samples_per_axis) : "naive";

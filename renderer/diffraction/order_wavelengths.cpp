@@ -107,7 +107,7 @@ glm::dvec3 evaluate_orders(const SpectralTables& tables, const OrderWavelengths&
     return integrate_linear_srgb(plan.fallback, [&](double l) { return evaluate_taylor(tables, {wi, wr, l}).brdf; });
   const DiffractionOrderLattice& L = plan.lattice;
   const glm::dvec2 uv = -glm::dvec2(wi.x + wr.x, wi.y + wr.y);
-  const bool over_pixel = pixel_steps && L.pixel_reach > 0.0;
+  const bool over_pixel = diffraction_orders_over_pixel(L, pixel_steps.has_value());
   const glm::dvec4 steps = over_pixel ? diffraction_pixel_steps(L, *pixel_steps) : glm::dvec4(0.0);
   const glm::dvec2 half_extent = diffraction_pixel_half_extent(steps);
   const double r = glm::length(half_extent);

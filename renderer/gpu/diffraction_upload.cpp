@@ -31,8 +31,8 @@ long diffraction_loop_iterations(const diffraction::PreparedDiffraction& prepare
 long order_loop_iterations(const diffraction::OrderWavelengths& plan, const diffraction::SpectralTables& tables,
                            bool over_pixel) {
   const auto& L = plan.lattice;
-  if (over_pixel &&
-      L.pixel_reach > 0.0) {  // two passes over the candidates, at most budget + candidates nodes of one bin each (O3)
+  // Over the pixel: two passes over the candidates, then at most budget + candidates nodes of one bin each (O3).
+  if (kernels::f64::diffraction_orders_over_pixel(L, over_pixel)) {
     const long candidates = static_cast<long>(std::ceil(plan.worst_orders_over_pixel));
     return 2 * candidates + (L.pixel_budget + candidates) * (2 + bin_loop_iterations(tables));
   }

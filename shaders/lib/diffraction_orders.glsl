@@ -28,6 +28,12 @@ struct DiffractionOrderLattice {
   int pixel_budget;  // over a pixel: midpoint nodes of all its orders, at most (O3)
 };
 
+// Whether a filtered method takes the pixel's mean of this lattice's orders: not where they lie too close for
+// O2 (pixel_reach 0), whose pixels keep the coherent window sum at their centre.
+inline bool diffraction_orders_over_pixel(DiffractionOrderLattice L, bool filtered) {
+  return filtered && L.pixel_reach > real(0);
+}
+
 // Half the extent per axis of the pixel's (u, v), uv + a steps.xy + b steps.zw (a, b in [-1/2, 1/2]), from
 // the change of (u, v) per pixel step along x (xy) and y (zw).
 inline real2 diffraction_pixel_half_extent(real4 steps) {

@@ -122,9 +122,10 @@ inline real2 microflake_frame_slope(real3 n, real3 w) { return horizon_safe_slop
 
 // The half vector's slope step toward one neighbouring pixel (eq. F3) in the frame of the pixel's normal n,
 // relative to the normal each point of the pixel has: to first order the slope of the half vector of l and the
-// neighbour's view v_q less the slope of the neighbour's normal n_q, both in n's frame, less the centre's.
-inline real2 microflake_half_slope_step(real3 n, real3 v, real3 l, real3 n_q, real3 v_q) {
-  return microflake_frame_slope(n, l + v_q) - microflake_frame_slope(n, n_q) - microflake_frame_slope(n, l + v);
+// neighbour's view v_q less the slope of the neighbour's normal n_q, both in n's frame, less the centre's,
+// centre = microflake_frame_slope(n, l + v) (taken once for a pixel's four neighbours).
+inline real2 microflake_half_slope_step(real3 n, real3 l, real2 centre, real3 n_q, real3 v_q) {
+  return microflake_frame_slope(n, l + v_q) - microflake_frame_slope(n, n_q) - centre;
 }
 
 // microflake_radiance with D averaged over the pixel (eq. F2); the BRDF's denominator (the cross-sections),

@@ -27,7 +27,7 @@ struct OrderObserver {
 // shares of F.8 belong to overlapping orders, which a grating this path runs does not have: F.11).
 vec3 diffraction_orders_xyz(DiffractionOrderLattice L, DiffractionTableInfo info, uint first_coefficient,
                             OrderObserver o, vec3 wi, vec3 wr, bool filtered, vec4 pixel_steps) {
-  bool over_pixel = filtered && L.pixel_reach > 0.0;  // else orders too close for O2: the centre's colour
+  bool over_pixel = diffraction_orders_over_pixel(L, filtered);
   vec2 uv = -(wi.xy + wr.xy);
   vec4 steps = over_pixel ? diffraction_pixel_steps(L, pixel_steps) : vec4(0.0);
   vec2 half_extent = diffraction_pixel_half_extent(steps);

@@ -107,10 +107,21 @@ vec3 camera_ray(vec2 film) {
                               vec2(globals.image.xy));
 }
 
-// The camera ray through the neighbouring pixel k (0: +x, 1: -x, 2: +y, 3: -y), `pixel_step` away on the film:
-// the pixel's parallelogram of normals and views for the lobes and orders taken over the pixel.
-vec3 neighbouring_camera_ray(vec2 film, float pixel_step, int k) {
-  return camera_ray(film + (k < 2 ? vec2(pixel_step, 0.0) : vec2(0.0, pixel_step)) * (k % 2 == 0 ? 1.0 : -1.0));
+// What the neighbouring pixel k (0: +x, 1: -x, 2: +y, 3: -y), `pixel_step` away on the film, sees of the hit's
+// primitive: its camera ray d, and the point and unit normal there (surface_seen_by), the normal on the side of
+// the pixel's own n. The corners of the pixel's parallelogram of normals and views, for the lobes and orders
+// taken over the pixel.
+struct Neighbour {
+  vec3 d;
+  vec3 p;
+  vec3 n;
+};
+
+Neighbour neighbour_seen(Hit hit, vec3 p, vec3 n, vec3 o, vec2 film, float pixel_step, int k) {
+  vec3 d_q = camera_ray(film + (k < 2 ? vec2(pixel_step, 0.0) : vec2(0.0, pixel_step)) * (k % 2 == 0 ? 1.0 : -1.0));
+  SurfaceSeenBy q = surface_seen_by(hit, p, o, d_q);
+  vec3 n_q = normalize(q.n);
+  return Neighbour(d_q, q.p, dot(n_q, n) < 0.0 ? -n_q : n_q);
 }
 
 #if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION)
@@ -128,10 +139,8 @@ vec4 diffraction_pixel_uv_steps(Hit hit, vec3 p, vec3 n, vec3 o, vec3 d, vec3 l,
   vec2 uv = -(centre.wi.xy + centre.wr.xy);
   vec2 to[4];  // toward +x, -x, +y, -y
   for (int k = 0; k < 4; ++k) {
-    vec3 d_q = neighbouring_camera_ray(film, pixel_step, k);
-    SurfaceSeenBy q = surface_seen_by(hit, p, o, d_q);
-    vec3 n_q = normalize(q.n);
-    DiffractionDirections w = diffraction_directions(dot(n_q, n) < 0.0 ? -n_q : n_q, surface_uv(hit, q.p).dpdu, l, -d_q);
+    Neighbour q = neighbour_seen(hit, p, n, o, film, pixel_step, k);
+    DiffractionDirections w = diffraction_directions(q.n, surface_uv(hit, q.p).dpdu, l, -q.d);
     to[k] = -(w.wi.xy + w.wr.xy) - uv;
   }
   return vec4(smaller_pixel_step(to[0], to[1]), smaller_pixel_step(to[2], to[3]));
@@ -209,10 +218,10 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
     vec4 steps = vec4(0.0);
     if (kTextureMethod >= 3u) {
       vec2 to[4];  // toward +x, -x, +y, -y
+      vec2 centre = microflake_frame_slope(n, l - d);
       for (int k = 0; k < 4; ++k) {
-        vec3 d_q = neighbouring_camera_ray(film, pixel_step, k);
-        vec3 n_q = normalize(surface_seen_by(hit, p, o, d_q).n);
-        to[k] = microflake_half_slope_step(n, -d, l, dot(n_q, n) < 0.0 ? -n_q : n_q, -d_q);
+        Neighbour q = neighbour_seen(hit, p, n, o, film, pixel_step, k);
+        to[k] = microflake_half_slope_step(n, l, centre, q.n, -q.d);
       }
       steps = vec4(smaller_pixel_step(to[0], to[1]), smaller_pixel_step(to[2], to[3]));
     }

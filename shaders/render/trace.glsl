@@ -169,8 +169,6 @@ struct SurfaceSeenBy {
 };
 
 SurfaceSeenBy surface_seen_by(Hit hit, vec3 p, vec3 o, vec3 d_n) {
-  vec3 n = hit.normal;
-  vec3 q = o + d_n * (dot(p - o, n) / (abs(dot(d_n, n)) > 1e-8 ? dot(d_n, n) : 1e-8));
 #if FACET_VARIANT_HAS(FACET_CODE_SPHERES)
   if (kHasSpheres && hit.primitive == kSphere) {
     vec4 s = sphere_at(hit.index).center_radius;
@@ -180,6 +178,8 @@ SurfaceSeenBy surface_seen_by(Hit hit, vec3 p, vec3 o, vec3 d_n) {
     return SurfaceSeenBy(s.xyz + normal, normal);
   }
 #endif
+  vec3 n = hit.normal;
+  vec3 q = o + d_n * (dot(p - o, n) / (abs(dot(d_n, n)) > 1e-8 ? dot(d_n, n) : 1e-8));  // on the tangent plane
 #if FACET_VARIANT_HAS(FACET_CODE_TRIANGLES)
   if (kHasTriangles && hit.primitive == kTriangle) {
     GpuTriangle tri = triangle_at(hit.index);

@@ -137,9 +137,10 @@ TEST(MicroflakePixelLobe, RadianceOverASpherePixelIsTheMeanOverItsNormals) {
           }
         mean /= double(m) * m;
         const glm::dvec3 n = normal_at(centre);
+        const glm::dvec2 half = k64::microflake_frame_slope(n, l + v);
         const auto step = [&](glm::dvec2 offset) {
-          return k64::smaller_pixel_step(k64::microflake_half_slope_step(n, v, l, normal_at(centre + offset), v),
-                                         k64::microflake_half_slope_step(n, v, l, normal_at(centre - offset), v));
+          return k64::smaller_pixel_step(k64::microflake_half_slope_step(n, l, half, normal_at(centre + offset), v),
+                                         k64::microflake_half_slope_step(n, l, half, normal_at(centre - offset), v));
         };
         const glm::dvec4 steps(step(glm::dvec2(pixel, 0.0)), step(glm::dvec2(0.0, pixel)));
         const double got = k64::microflake_radiance_over_pixel(ndf, param, albedo, n, v, l, E, 1.0, ambient, steps).x;
@@ -195,7 +196,8 @@ TEST(MicroflakePixelLobe, ExtremeInputsStayFinite) {
   const glm::dvec3 n(0.0, 0.0, 1.0), l = glm::normalize(glm::dvec3(0.0, 0.99, 0.01));
   const glm::dvec3 v = glm::normalize(glm::dvec3(0.0, -0.999, 0.001)),
                    below = glm::normalize(v - glm::dvec3(0, 0, 0.01));
-  const glm::dvec2 outward = k64::microflake_half_slope_step(n, v, l, glm::dvec3(0.0, -1.0, 0.0), below);
+  const glm::dvec2 outward =
+      k64::microflake_half_slope_step(n, l, k64::microflake_frame_slope(n, l + v), glm::dvec3(0.0, -1.0, 0.0), below);
   const glm::dvec4 steps(k64::smaller_pixel_step(outward, glm::dvec2(1e30)), outward);
   EXPECT_TRUE(std::isfinite(steps.x) && std::isfinite(steps.y) && std::isfinite(steps.z) && std::isfinite(steps.w));
   for (int ndf : {NDF_BECKMANN, NDF_GGX, NDF_KK, NDF_SG}) {
