@@ -13,7 +13,7 @@
 #include "common/error.hpp"
 #include "gpu/adaptive_refinement.hpp"
 #include "gpu/direct_pass_variant.hpp"
-#include "gpu/microsurface_upload.hpp"
+#include "gpu/heightfield_trace_bound.hpp"
 #include "gpu/render_layout.hpp"
 #include "gpu/work_counter.hpp"
 #include "gpu/workgroup_order.hpp"
@@ -38,19 +38,25 @@ std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod
 // word). The refusal is one line.
 const Scene& runnable(const Scene& scene, const RenderMethod& method) {
   if (!traces_height_fields(scene, method)) return scene;
-  std::int64_t nodes = 0;
-  for (const Plane& plane : scene.planes) {
-    const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
-    if (!m || !plane.size) continue;
-    nodes += heightfield_trace_cost(*m, *plane.size).nodes;
-  }
-  // Camera and shadow ray; filtered adds its statistics' shadow ray from a footprint out (T5).
-  const int rays_per_sample = method.texture >= RenderMethod::Texture::Filtered ? 3 : 2;
-  const std::int64_t bound = FACET_HEIGHTFIELD_SAMPLE_STEPS / rays_per_sample;
-  if (nodes > bound)
-    throw Error("the microsurfaces' height fields span too many texels for the GPU tracer: a ray may visit " +
-                std::to_string(nodes) + " MIP nodes, more than its loop bound of " + std::to_string(bound) +
-                " for " + method.name() + " (use coarser texels, a smaller rectangle or --method mip)");
+  // A camera ray and a shadow ray per sample; filtered adds its statistics' shadow ray from a footprint out (T5).
+  const int shadow_rays = method.texture >= RenderMethod::Texture::Filtered ? 2 : 1;
+  const HeightFieldSampleNodes nodes = heightfield_sample_nodes(scene);
+  const std::int64_t longest = std::max(nodes.camera, nodes.shadow), sample = nodes.camera + shadow_rays * nodes.shadow;
+  const std::string rays = "(camera ray " + std::to_string(nodes.camera) + ", " + std::to_string(shadow_rays) +
+                           " shadow ray" + (shadow_rays > 1 ? "s" : "") + " of " + std::to_string(nodes.shadow) + ")";
+  const std::string passed = longest > FACET_HEIGHTFIELD_MAX_STEPS
+                                 ? "a ray may visit " + std::to_string(longest) + " MIP nodes " + rays +
+                                       ", more than its loop bound of " + std::to_string(FACET_HEIGHTFIELD_MAX_STEPS)
+                             : sample > FACET_HEIGHTFIELD_SAMPLE_STEPS
+                                 ? "a sample's rays may visit " + std::to_string(sample) + " MIP nodes " + rays +
+                                       ", more than their loop bound of " +
+                                       std::to_string(FACET_HEIGHTFIELD_SAMPLE_STEPS)
+                                 : "";
+  if (!passed.empty())
+    throw Error(
+        "the microsurfaces' height fields span too many texels for the GPU tracer: " + passed + " for " +
+        method.name() +
+        " (use coarser texels, a smaller rectangle, a light or camera farther above the field, or --method mip)");
   return scene;
 }
 

@@ -142,24 +142,6 @@ uint heightfield_bound_span(int width, int height) {
   return static_cast<uint>(2 * a);
 }
 
-HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material, glm::dvec2 patch_size) {
-  const std::int64_t w = material.heights->width, h = material.heights->height;
-  const std::int64_t tiles_x =
-      static_cast<std::int64_t>(std::ceil(patch_size.x / (static_cast<double>(w) * material.texel_size)));
-  const std::int64_t tiles_y =
-      static_cast<std::int64_t>(std::ceil(patch_size.y / (static_cast<double>(h) * material.texel_size)));
-  // The traversal (render/heightfield_trace.glsl) takes one step per node it enters, enters each node
-  // at most once and enters a level's nodes in order along the ray, each a column or a row (or both)
-  // past the last: a segment over a C x R grid of nodes enters at most C + R - 1 of them, per level.
-  HeightFieldTraceCost cost;
-  for (int l = 0; (std::int64_t{1} << l) < 2 * std::max(w, h); ++l) {
-    const std::int64_t columns = tiles_x * ((w + (std::int64_t{1} << l) - 1) >> l);
-    const std::int64_t rows = tiles_y * ((h + (std::int64_t{1} << l) - 1) >> l);
-    cost.nodes += columns + rows - 1;
-  }
-  return cost;
-}
-
 GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& material) {
   const assets::ScalarField& field = *material.heights;
   // Heights are stored about their mean, so E[z^2] - E[z]^2 does not cancel in float.

@@ -39,12 +39,4 @@ std::size_t microsurface_texels(const MicrosurfaceMaterial& material);
 // before the next (docs/render_speed.md, "A step of the height-field tracer").
 uint heightfield_bound_span(int width, int height);
 
-// What tracing the material's field over a rectangle of patch_size costs the GPU tracer: an upper
-// bound on the MIP nodes one ray visits (in all fields of a scene, at most a method's share of
-// FACET_HEIGHTFIELD_SAMPLE_STEPS: renderer/gpu/direct_pass.cpp).
-struct HeightFieldTraceCost {
-  std::int64_t nodes = 0;
-};
-HeightFieldTraceCost heightfield_trace_cost(const MicrosurfaceMaterial& material, glm::dvec2 patch_size);
-
 }  // namespace facet::gpu

@@ -60,8 +60,8 @@ struct GpuBvhNode {
 // Quadtree nodes the height-field rays of one sample may visit on the GPU (render/heightfield_trace.glsl),
 // in all: they leave ~9500 of lavapipe's 65535 loop iterations per invocation to the rest of the pass.
 // A sample casts two such rays (camera, shadow), filtered's three (its statistics' shadow ray from a
-// footprint out, T5), so the pass refuses fields whose bound per ray passes the share of its method
-// (renderer/gpu/direct_pass.cpp). FACET_HEIGHTFIELD_MAX_STEPS caps one ray's loop.
+// footprint out, T5), so the pass refuses a scene whose rays' bounds sum past it, or one ray's past
+// FACET_HEIGHTFIELD_MAX_STEPS, which caps one ray's loop (renderer/gpu/heightfield_trace_bound.hpp).
 #define FACET_HEIGHTFIELD_SAMPLE_STEPS 56000
 #define FACET_HEIGHTFIELD_MAX_STEPS 28000
 

@@ -5,7 +5,7 @@
 // Silhouettes come for free: outside the rectangle there is no surface, and a ray that passes over
 // the field's bumps at a grazing angle misses them.
 // Loop bound: one step per MIP node visited, at most FACET_HEIGHTFIELD_MAX_STEPS per ray; the pass
-// refuses a patch whose bound on visited nodes passes it (heightfield_trace_cost).
+// refuses a scene whose bound on visited nodes passes it (renderer/gpu/heightfield_trace_bound.hpp).
 #ifndef FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
 #define FACET_RENDER_HEIGHTFIELD_TRACE_GLSL
 #include "layout/heightfield_layout.glsl"

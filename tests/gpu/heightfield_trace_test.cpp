@@ -12,6 +12,8 @@
 #include "common/error.hpp"
 #include "cpu/reference_renderer.hpp"
 #include "gpu/direct_pass.hpp"
+#include "gpu/heightfield_trace_bound.hpp"
+#include "gpu/scene_layout.hpp"
 #include "image/metrics.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/vulkan_fixture.hpp"
@@ -115,27 +117,68 @@ TEST(HeightFieldTrace, SupersamplingConvergesToTheReference) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
-// A field whose traversal could pass the shader's loop bound is refused in one line, not cut short.
+// A field whose traversal could pass the shader's loop bound is refused in one line, not cut short: the
+// terrain with 0.5 mm texels (8000 x 12000 on the rectangle) under a light along its plane, whose shadow
+// rays may run the rectangle's length within the heights' range, or seen from a camera within that range.
 TEST(HeightFieldTrace, FieldsBeyondTheLoopBoundAreRefused) {
   auto context = test::make_validated_context();
+  Scene grazing_light = scene("microsurface_terrain");
+  std::get<MicrosurfaceMaterial>(grazing_light.materials[0]).texel_size = 0.0005;
+  grazing_light.light.direction = {-1.0, 0.0, 0.0};
+  Scene low_camera = scene("microsurface_terrain");
+  std::get<MicrosurfaceMaterial>(low_camera.materials[0]).texel_size = 0.0005;
+  low_camera.camera.position.y = 0.001;
+  for (const Scene* s : {&grazing_light, &low_camera})
+    for (const char* method : {"naive", "ss:2", "filtered"}) {
+      try {
+        gpu::DirectPass pass(*context, *s, gpu::RenderMethod::parse(method));
+        FAIL() << "expected a refusal of " << method;
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("loop bound"), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+      }
+    }
+  // mip and colormip shade the flat rectangle, so they still render it.
+  EXPECT_NO_THROW(gpu::DirectPass(*context, grazing_light, gpu::RenderMethod::parse("mip")));
+  // The pass refuses exactly what its bound puts past the loop's: filtered's second shadow ray counts.
   Scene s = scene("microsurface_terrain");
-  std::get<MicrosurfaceMaterial>(s.materials[0]).texel_size = 0.0005;  // 8000 x 12000 texels on the rectangle
-  for (const char* method : {"naive", "ss:2", "filtered"}) {
-    try {
-      gpu::DirectPass pass(*context, s, gpu::RenderMethod::parse(method));
-      FAIL() << "expected a refusal of " << method;
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("loop bound"), std::string::npos) << e.what();
-      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+  int outcomes[2][2] = {};  // [filtered][fits]
+  for (double texel : {0.004, 0.001, 0.0005, 0.0002}) {
+    std::get<MicrosurfaceMaterial>(s.materials[0]).texel_size = texel;
+    for (double elevation : {0.3, 0.05, 0.045, 0.01, 0.002}) {
+      s.light.direction = glm::normalize(glm::dvec3(-1.0, elevation, -0.4));
+      const gpu::HeightFieldSampleNodes nodes = gpu::heightfield_sample_nodes(s);
+      std::printf("texel %g, light (-1, %g, -0.4): camera ray %lld nodes, shadow ray %lld\n", texel, elevation,
+                  static_cast<long long>(nodes.camera), static_cast<long long>(nodes.shadow));
+      for (int shadow_rays : {1, 2}) {
+        const bool fits = std::max(nodes.camera, nodes.shadow) <= FACET_HEIGHTFIELD_MAX_STEPS &&
+                          nodes.camera + shadow_rays * nodes.shadow <= FACET_HEIGHTFIELD_SAMPLE_STEPS;
+        const auto method = gpu::RenderMethod::parse(shadow_rays == 1 ? "naive" : "filtered");
+        ++outcomes[shadow_rays - 1][fits];
+        if (fits) {
+          EXPECT_NO_THROW(gpu::DirectPass(*context, s, method)) << texel << " " << elevation;
+        } else {
+          EXPECT_THROW(gpu::DirectPass(*context, s, method), Error) << texel << " " << elevation;
+        }
+      }
     }
   }
-  // mip and colormip shade the flat rectangle, so they still render it.
-  EXPECT_NO_THROW(gpu::DirectPass(*context, s, gpu::RenderMethod::parse("mip")));
-  // 22 986 nodes per ray: within the share of naive's two rays (28 000), past filtered's three (18 666).
-  std::get<MicrosurfaceMaterial>(s.materials[0]).texel_size = 0.0009;
-  EXPECT_NO_THROW(gpu::DirectPass(*context, s, gpu::RenderMethod::parse("naive")));
-  EXPECT_THROW(gpu::DirectPass(*context, s, gpu::RenderMethod::parse("filtered")), Error);
-  EXPECT_THROW(gpu::DirectPass(*context, s, gpu::RenderMethod::parse("filtered:table:ss:2")), Error);
+  // Both outcomes for both methods, and more refusals for filtered (texel 0.0002 at elevation 0.045).
+  EXPECT_GT(outcomes[0][0], 0);
+  EXPECT_GT(outcomes[0][1], 0);
+  EXPECT_GT(outcomes[1][0], outcomes[0][0]);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+// The 0.5 mm terrain from the shipped camera and light: every camera ray crosses the heights' range
+// steeply enough that a ray's nodes stay within the loop over 8000 x 12000 texels, and the GPU traces the
+// reference's samples (a ray cut short by the loop would miss, or see through a bump, and disagree).
+TEST(HeightFieldTrace, FineFieldsSeenFromAboveAreTraced) {
+  auto context = test::make_validated_context();
+  Scene s = scene("microsurface_terrain");
+  std::get<MicrosurfaceMaterial>(s.materials[0]).texel_size = 0.0005;
+  expect_same_samples(*context, s, "terrain, 0.5 mm texels", 64, 36, 1);
+  EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
 }  // namespace heightfield_trace_test

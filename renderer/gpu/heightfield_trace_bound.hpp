@@ -1,0 +1,38 @@
+// How many MIP nodes the GPU height-field tracer (shaders/render/heightfield_trace.glsl) may visit per ray,
+// so that the pass can refuse, in one line, a scene whose rays could pass lavapipe's loop limit
+// (docs/microsurface_filtering.md, "Loop bound"). The tracer cuts every ray to the field's height range
+// before it walks, so a ray's nodes are bounded by the length of that cut segment over the rectangle: short
+// wherever the ray crosses the range steeply, the whole rectangle only for rays nearly parallel to it.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.hpp"
+
+namespace facet::gpu {
+
+// An upper bound on the MIP nodes one ray visits in the field of `material` tiled over a rectangle of
+// `patch_size` (world units), where the ray's segment within the field's height range runs at most
+// `path_texels` texels across the rectangle (infinity: anywhere across it).
+std::int64_t heightfield_trace_nodes(const MicrosurfaceMaterial& material, glm::dvec2 patch_size, double path_texels);
+
+// The longest segment, in world units across the plane, of a ray within the height range [z_lo, z_hi] of a
+// field on `plane` (heights along its normal from `plane.point`), widened by the tracer's margin for origins
+// up to `origin_height` from the plane: for rays from `origin` that reach the rectangle (camera rays), or in
+// direction `direction` from anywhere within `origin_height` of the plane (shadow rays). Infinity where the
+// ray can run parallel to the plane within the range.
+double heightfield_camera_ray_path(const Plane& plane, double z_lo, double z_hi, glm::dvec3 origin);
+double heightfield_directed_ray_path(const Plane& plane, double z_lo, double z_hi, glm::dvec3 direction,
+                                     double origin_height);
+
+// The nodes a sample's rays may visit in all of the scene's height fields: its camera ray (every camera the
+// scene renders, its path's frames included) and each shadow ray toward the light.
+struct HeightFieldSampleNodes {
+  std::int64_t camera = 0;
+  std::int64_t shadow = 0;
+};
+HeightFieldSampleNodes heightfield_sample_nodes(const Scene& scene);
+
+}  // namespace facet::gpu
