@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <variant>
@@ -33,14 +34,18 @@ std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod
   return method.counts_work ? instrument_work_counts(program) : std::vector<uint32_t>(program.begin(), program.end());
 }
 
-// The scene, checked before the pass uploads or compiles anything: no height field's traversal may pass
-// the shader's loop bound (render/heightfield_trace.glsl; lavapipe would cut the loop short without a
-// word). The refusal is one line.
-const Scene& runnable(const Scene& scene, const RenderMethod& method) {
-  if (!traces_height_fields(scene, method)) return scene;
-  // A camera ray and a shadow ray per sample; filtered adds its statistics' shadow ray from a footprint out (T5).
-  const int shadow_rays = method.texture >= RenderMethod::Texture::Filtered ? 2 : 1;
-  const HeightFieldSampleNodes nodes = heightfield_sample_nodes(scene);
+// The shadow rays a sample casts through height fields: one, and filtered's statistics' ray from a footprint
+// out (T5); 0 where the method traces none.
+int field_shadow_rays(const Scene& scene, const RenderMethod& method) {
+  if (!traces_height_fields(scene, method)) return 0;
+  return method.texture >= RenderMethod::Texture::Filtered ? 2 : 1;
+}
+
+// The one-line refusal of rays that could pass the tracer's loop bound (render/heightfield_trace.glsl; lavapipe
+// would cut the loop short without a word): the shadow rays, and the camera ray from `camera` where given.
+void check_traversal(const Scene& scene, int shadow_rays, const std::string& method, std::optional<glm::dvec3> camera) {
+  if (shadow_rays == 0) return;
+  const HeightFieldSampleNodes nodes = heightfield_sample_nodes(scene, camera);
   const std::int64_t longest = std::max(nodes.camera, nodes.shadow), sample = nodes.camera + shadow_rays * nodes.shadow;
   const std::string rays = "(camera ray " + std::to_string(nodes.camera) + ", " + std::to_string(shadow_rays) +
                            " shadow ray" + (shadow_rays > 1 ? "s" : "") + " of " + std::to_string(nodes.shadow) + ")";
@@ -54,9 +59,16 @@ const Scene& runnable(const Scene& scene, const RenderMethod& method) {
                                  : "";
   if (!passed.empty())
     throw Error(
-        "the microsurfaces' height fields span too many texels for the GPU tracer: " + passed + " for " +
-        method.name() +
+        "the microsurfaces' height fields span too many texels for the GPU tracer: " + passed + " for " + method +
+        (camera ? "" : " whatever the camera") +
         " (use coarser texels, a smaller rectangle, a light or camera farther above the field, or --method mip)");
+}
+
+// The scene, checked before the pass uploads or compiles anything: a still's camera with its shadow rays, a
+// camera path's shadow rays (each frame's camera is checked as it renders).
+const Scene& runnable(const Scene& scene, const RenderMethod& method) {
+  check_traversal(scene, field_shadow_rays(scene, method), method.name(),
+                  scene.camera_path ? std::nullopt : std::optional<glm::dvec3>(scene.camera.position));
   return scene;
 }
 
@@ -237,6 +249,8 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
                        PhaseTimings* timings, DiffractionPlan diffraction)
     : scene_(&scene),  // runnable (checked before the plan)
+      method_name_(method.name()),
+      field_shadow_rays_(field_shadow_rays(scene, method)),
       tile_size_(tile_size > 0 && tile_size <= kMaxTileSize
                      ? tile_size
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
@@ -406,6 +420,7 @@ std::vector<const vk::Buffer*> DirectPass::bindings() const {
 Image DirectPass::render(const Camera& camera, int width, int height, RenderStats* stats,
                          const TileProgress& progress) {
   if (width <= 0 || height <= 0) throw Error("image size must be positive");
+  check_traversal(*scene_, field_shadow_rays_, method_name_, camera.position);
   buffers_.set_camera(*scene_, camera, width, height);
   const std::vector<const vk::Buffer*> bindings = this->bindings();
   Image image(width, height);

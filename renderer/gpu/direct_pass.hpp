@@ -7,6 +7,7 @@
 #include <future>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "common/phase_timings.hpp"
@@ -78,6 +79,8 @@ class DirectPass {
               std::span<const float> edge, RenderStats& stats);
 
   const Scene* scene_;
+  std::string method_name_;
+  int field_shadow_rays_;  // through height fields per sample (0: none traced), for each frame's check
   int tile_size_;
   int samples_per_axis_;  // ss:K: K^2 dispatches per tile
   AovSet aovs_;           // the auxiliary channels each frame carries

@@ -6,7 +6,6 @@
 #include <limits>
 #include <variant>
 
-#include "scene/camera_path.hpp"
 #include "scene/plane_frame.hpp"
 
 namespace facet::gpu {
@@ -137,21 +136,17 @@ double heightfield_directed_ray_path(const Plane& plane, double z_lo, double z_h
   return (z_hi - z_lo + 2.0 * margin) * std::sqrt(std::max(1.0 - sine * sine, 0.0)) / sine * (1.0 + 1e-3);
 }
 
-HeightFieldSampleNodes heightfield_sample_nodes(const Scene& scene) {
-  std::vector<glm::dvec3> cameras{scene.camera.position};
-  if (scene.camera_path)
-    for (int frame = 0; frame < frame_count(scene); ++frame) cameras.push_back(camera_at(scene, frame).position);
+HeightFieldSampleNodes heightfield_sample_nodes(const Scene& scene, std::optional<glm::dvec3> camera) {
   HeightFieldSampleNodes nodes;
   for (const Plane& plane : scene.planes) {
     const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
     if (!m || !plane.size) continue;
     const glm::dvec2 z = height_range(*m);
-    double camera_path = 0.0;
-    for (const glm::dvec3& c : cameras)
-      camera_path = std::max(camera_path, heightfield_camera_ray_path(plane, z.x, z.y, c));
     const double shadow_path =
         heightfield_directed_ray_path(plane, z.x, z.y, scene.light.direction, shadow_origin_height(scene, plane));
-    nodes.camera += heightfield_trace_nodes(*m, *plane.size, camera_path / m->texel_size);
+    if (camera)
+      nodes.camera += heightfield_trace_nodes(*m, *plane.size,
+                                              heightfield_camera_ray_path(plane, z.x, z.y, *camera) / m->texel_size);
     nodes.shadow += heightfield_trace_nodes(*m, *plane.size, shadow_path / m->texel_size);
   }
   return nodes;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -27,12 +28,12 @@ double heightfield_camera_ray_path(const Plane& plane, double z_lo, double z_hi,
 double heightfield_directed_ray_path(const Plane& plane, double z_lo, double z_hi, glm::dvec3 direction,
                                      double origin_height);
 
-// The nodes a sample's rays may visit in all of the scene's height fields: its camera ray (every camera the
-// scene renders, its path's frames included) and each shadow ray toward the light.
+// The nodes a sample's rays may visit in all of the scene's height fields: its camera ray from `camera` (none:
+// 0, the shadow rays alone) and each shadow ray toward the light.
 struct HeightFieldSampleNodes {
   std::int64_t camera = 0;
   std::int64_t shadow = 0;
 };
-HeightFieldSampleNodes heightfield_sample_nodes(const Scene& scene);
+HeightFieldSampleNodes heightfield_sample_nodes(const Scene& scene, std::optional<glm::dvec3> camera);
 
 }  // namespace facet::gpu

@@ -15,6 +15,7 @@
 #include "gpu/heightfield_trace_bound.hpp"
 #include "gpu/scene_layout.hpp"
 #include "image/metrics.hpp"
+#include "scene/camera_path.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/vulkan_fixture.hpp"
 
@@ -147,7 +148,7 @@ TEST(HeightFieldTrace, FieldsBeyondTheLoopBoundAreRefused) {
     std::get<MicrosurfaceMaterial>(s.materials[0]).texel_size = texel;
     for (double elevation : {0.3, 0.05, 0.045, 0.01, 0.002}) {
       s.light.direction = glm::normalize(glm::dvec3(-1.0, elevation, -0.4));
-      const gpu::HeightFieldSampleNodes nodes = gpu::heightfield_sample_nodes(s);
+      const gpu::HeightFieldSampleNodes nodes = gpu::heightfield_sample_nodes(s, s.camera.position);
       std::printf("texel %g, light (-1, %g, -0.4): camera ray %lld nodes, shadow ray %lld\n", texel, elevation,
                   static_cast<long long>(nodes.camera), static_cast<long long>(nodes.shadow));
       for (int shadow_rays : {1, 2}) {
@@ -167,6 +168,29 @@ TEST(HeightFieldTrace, FieldsBeyondTheLoopBoundAreRefused) {
   EXPECT_GT(outcomes[0][0], 0);
   EXPECT_GT(outcomes[0][1], 0);
   EXPECT_GT(outcomes[1][0], outcomes[0][0]);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+// Along a camera path each frame's camera is checked as it renders: the frames above the field render, the
+// one that comes down into its heights' range is refused in one line (not the whole path, nor silently cut).
+TEST(HeightFieldTrace, EachFrameOfACameraPathIsCheckedAsItRenders) {
+  auto context = test::make_validated_context();
+  Scene s = scene("microsurface_terrain");
+  std::get<MicrosurfaceMaterial>(s.materials[0]).texel_size = 0.0005;
+  CameraPath path;
+  path.frames = 3;
+  path.keys = {{0, s.camera.position, s.camera.target, s.camera.fov_y_deg},
+               {2, glm::dvec3(0.0, 0.001, 2.2), s.camera.target, s.camera.fov_y_deg}};
+  s.camera_path = path;
+  gpu::DirectPass pass(*context, s, gpu::RenderMethod::parse("naive"));
+  EXPECT_NO_THROW(pass.render(camera_at(s, 0), 16, 9));
+  try {
+    pass.render(camera_at(s, 2), 16, 9);
+    FAIL() << "expected a refusal of the frame within the heights' range";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("camera ray"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+  }
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
