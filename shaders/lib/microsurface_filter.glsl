@@ -166,12 +166,88 @@ inline real3 microsurface_lobe_cov(real2 alpha) {
   return real3(real(0.5) * alpha.x * alpha.x, real(0.5) * alpha.y * alpha.y, real(0));
 }
 
+// What the slope-space lobe leaves out at a facet of slope s: its own Beckmann lobe at h in its frame over the
+// sheared one, exp(q_shear - q_facet) (h_z / h'_z)^4, times its own G2 there; 0 where l, v or h lies below it.
+inline real microsurface_facet_lobe_at(real2 s, real2 alpha, real3 l, real3 v, real3 h, real2 s_h) {
+  BeckmannFacetFrame f = beckmann_facet_frame(normalize(real3(-s.x, -s.y, real(1))), real3(1, 0, 0));
+  real3 wi = beckmann_facet_local(f, l), wo = beckmann_facet_local(f, v), hf = beckmann_facet_local(f, h);
+  if (!(wi.z > real(0) && wo.z > real(0) && hf.z > real(0))) return real(0);
+  real2 d = s_h - s, t = real2(hf.x, hf.y) / hf.z;
+  real q_shear = d.x * d.x / (alpha.x * alpha.x) + d.y * d.y / (alpha.y * alpha.y);
+  real q_facet = t.x * t.x / (alpha.x * alpha.x) + t.y * t.y / (alpha.y * alpha.y);
+  real log_ratio = q_shear - q_facet + real(4) * log(h.z / hf.z);  // a facet h grazes reads exp(-inf) = 0
+  return exp(min(log_ratio, real(80))) * beckmann_facet_g2(wi, wo, alpha);
+}
+
+// The facets whose lobes reach the half vector h, in their own frames (eq. M8' of docs/microsurface_filtering.md).
+// In slope space the footprint's facets N(s_mean, cov) times the lobe N(s_h - s; 0, lobe) is the convolved
+// density at s_h times the law of the facet slope s given h, N(mu, P), P = cov (cov + lobe)^-1 lobe,
+// mu = lobe (cov + lobe)^-1 s_mean + cov (cov + lobe)^-1 s_h. The factor is the mean over that law of
+// microsurface_facet_lobe_at, which vanishes past the facets that turn l or v below their horizon: the
+// half-planes s . w_xy < w_z (w = l, v), at grazing angles a strip narrower than the law. In whitened
+// coordinates z (s = mu + L z) the axis e1 is the tighter half-plane's normal: along it the allowed interval
+// [lo, hi] at each of 3 Gauss-Hermite nodes z2 across is exact, and the mean over it is taken at the truncated
+// normal's mean +- its standard deviation (exact for quadratics). A point footprint (cov -> 0) gives
+// microsurface_facet_lobe_at the mean facet.
+inline real microsurface_facet_lobe_factor(real2 s_mean, real3 cov, real2 alpha, real3 l, real3 v) {
+  real3 lobe = microsurface_lobe_cov(alpha);
+  real3 h = normalize(l + v);
+  real2 s_h = real2(-h.x / h.z, -h.y / h.z);
+  real2x2 c = real2x2(cov.x, cov.z, cov.z, cov.y);
+  real2x2 g = real2x2(lobe.x, lobe.z, lobe.z, lobe.y);
+  real2x2 sum_inverse = inverse(c + g);
+  real2x2 p = c * sum_inverse * g;
+  real2 mu = g * (sum_inverse * s_mean) + c * (sum_inverse * s_h);
+  real l00 = sqrt(max(p[0][0], real(0)));
+  real l10 = l00 > real(0) ? real(0.5) * (p[0][1] + p[1][0]) / l00 : real(0);
+  real l11 = sqrt(max(p[1][1] - l10 * l10, real(0)));
+  real2x2 chol = real2x2(l00, l10, real(0), l11);  // columns: s - mu = chol z
+  // The half-planes a_k . z < b_k of l and v: a_k = chol^T w_xy, b_k = w_z - mu . w_xy.
+  real2 a_l = transpose(chol) * real2(l.x, l.y), a_v = transpose(chol) * real2(v.x, v.y);
+  real b_l = l.z - dot(mu, real2(l.x, l.y)), b_v = v.z - dot(mu, real2(v.x, v.y));
+  real margin_l = b_l / max(length(a_l), real(1e-30)), margin_v = b_v / max(length(a_v), real(1e-30));
+  real2 axis = margin_l <= margin_v ? a_l : a_v;
+  real2 e1 = length(axis) > real(0) ? normalize(axis) : real2(1, 0), e2 = real2(-e1.y, e1.x);
+  real factor = real(0);
+  for (int j = 0; j < MS_SLOPE_NODES_COSINE; ++j) {
+    real2 node = microsurface_hermite(MS_SLOPE_NODES_COSINE, j);
+    real lo = real(-40), hi = real(40);
+    bool empty = false;
+    for (int k = 0; k < 2; ++k) {
+      real2 a = k == 0 ? a_l : a_v;
+      real along = dot(a, e1), rest = (k == 0 ? b_l : b_v) - dot(a, e2) * node.x;
+      if (along > real(0)) hi = min(hi, rest / along);
+      else if (along < real(0)) lo = max(lo, rest / along);
+      else empty = empty || !(rest > real(0));
+    }
+    if (empty || !(lo < hi)) continue;
+    // Phi(hi) - Phi(lo) from the tails on the side where they are small, the truncated normal's mean and
+    // variance (kept within the interval's).
+    real pdf_lo = sf_normal_pdf(lo), pdf_hi = sf_normal_pdf(hi);
+    real mass = lo >= real(0) ? sf_normal_tail(lo) - sf_normal_tail(hi)
+                : hi <= real(0) ? sf_normal_tail(-hi) - sf_normal_tail(-lo)
+                                : real(1) - sf_normal_tail(hi) - sf_normal_tail(-lo);
+    if (!(mass > real(1e-30))) continue;
+    real mean = clamp((pdf_lo - pdf_hi) / mass, lo, hi);
+    real second = real(1) + (lo * pdf_lo - hi * pdf_hi) / mass;
+    real sd = sqrt(clamp(second - mean * mean, real(0), real(0.25) * (hi - lo) * (hi - lo)));
+    real inner = real(0);
+    for (int side = -1; side <= 1; side += 2) {
+      real z1 = clamp(mean + real(side) * sd, lo, hi);
+      inner += microsurface_facet_lobe_at(mu + chol * (z1 * e1 + node.x * e2), alpha, l, v, h, s_h);
+    }
+    factor += node.y * mass * real(0.5) * inner;
+  }
+  return factor;
+}
+
 // The Beckmann lobe (roughness alpha along the plane's tangent and bitangent) on the footprint's
 // slopes, LEAN-convolved (Olano and Baker 2010): slopes N(s_mean, Sigma + alpha^2/2). Returns
-// f cos_i = D(h) G2/(4 cos_o) with D(h) = p(slope of h)/h_z^4 and the height-correlated
-// G2 = 1/(1 + Lambda_i + Lambda_o) of the same Gaussian; 0 when l or v is below the plane. D is averaged
-// over the pixel whose half-vector slope steps are pixel_steps (microsurface_pixel_half_slope_steps; 0: D
-// at the pixel's centre alone); G2, smooth over a pixel, is taken at its centre.
+// f cos_i = D(h) G2 F/(4 cos_o) with D(h) = p(slope of h)/h_z^4, G2 = 1/(1 + Lambda_i + Lambda_o) the
+// height-correlated masking-shadowing of the footprint's own slopes N(s_mean, Sigma) and F the facets' own lobes
+// and masking in their frames (microsurface_facet_lobe_factor, eq. M8'); 0 when l or v is below the plane. D is
+// averaged over the pixel whose half-vector slope steps are pixel_steps (microsurface_pixel_half_slope_steps; 0:
+// D at the pixel's centre alone); G2 and F, smooth over a pixel, are taken at its centre.
 inline real microsurface_specular(MicrosurfaceStatistics s, real2 alpha, real3 l, real3 v, real4 pixel_steps) {
   if (l.z <= real(0) || v.z <= real(0)) return real(0);
   real3 cov = s.s_cov + microsurface_lobe_cov(alpha);
@@ -179,8 +255,8 @@ inline real microsurface_specular(MicrosurfaceStatistics s, real2 alpha, real3 l
                                   pixel_steps);
   real2 light = microsurface_angles(l);
   real2 view = microsurface_angles(v);
-  real G2 = gaussian_smith_g2(s.s_mean, cov, light.x, light.y, view.x, view.y);
-  return D * G2 / (real(4) * v.z);
+  real G2 = gaussian_smith_g2(s.s_mean, s.s_cov, light.x, light.y, view.x, view.y);
+  return D * G2 * microsurface_facet_lobe_factor(s.s_mean, s.s_cov, alpha, l, v) / (real(4) * v.z);
 }
 
 // beckmann_facet_specular with D averaged over the pixel (eq. P2): the facet's Beckmann slopes
