@@ -229,43 +229,28 @@ TEST(MicrosurfaceFilter, SpecularLobeIsTheFacetsOwnLobesOverTheFootprint) {
     glm::dvec3 l, v;
     double tolerance;  // of the 4 x 2 rule against the n x n grid (measured in the comment)
   };
+  // A direction `radians` above the plane, toward +y (side 1) or -y (side -1).
+  const auto up = [](double radians, double side) {
+    return glm::dvec3(0.0, side * std::cos(radians), std::sin(radians));
+  };
   const double e5 = 5.0 * M_PI / 180.0;
+  const k64::MicrosurfaceStatistics steep{0.0, 0.01, {0.0, 0.0}, {0.22, 0.22, 0.0}};
   const Case cases[] = {
       // moderate angles, a correlated footprint (measured 0.3 %)
       {"moderate", {0.0, 0.01, {0.05, -0.1}, {0.02, 0.05, 0.01}}, alpha, l, v, 0.01},
       // lobe wider than the footprint's slopes (0.1 %)
-      {"wide lobe", {0.0, 0.01, {0.0, 0.0}, {0.01, 0.01, 0.0}}, glm::dvec2(0.3, 0.3), l, v, 0.01},
+      {"wide lobe", {0.0, 0.01, {0.0, 0.0}, {0.01, 0.01, 0.0}}, glm::dvec2(0.3), l, v, 0.01},
       // 5 degrees above the plane on both sides, mirrored: the facets that keep both above their horizon are
-      // a strip narrower than the law of the facets under h (1.1 %)
-      {"grazing mirror",
-       {0.0, 0.01, {0.0, 0.0}, {0.08, 0.08, 0.0}},
-       glm::dvec2(0.3, 0.3),
-       glm::dvec3(0.0, -std::cos(e5), std::sin(e5)),
-       glm::dvec3(0.0, std::cos(e5), std::sin(e5)),
-       0.04},
+      // a strip narrower than the law of the facets under h (1.1 %); with the anisotropic lobe across it (2.1 %)
+      {"grazing mirror", {0.0, 0.01, {0.0, 0.0}, {0.08, 0.08, 0.0}}, glm::dvec2(0.3), up(e5, -1), up(e5, 1), 0.04},
+      {"grazing anisotropic", {0.0, 0.01, {0.0, 0.0}, {0.08, 0.02, 0.01}}, alpha, up(e5, -1), up(e5, 1), 0.04},
       // a steep field (slopes' deviation 0.47) seen 2 and 6 degrees above the plane, lit 24 degrees up from the
       // far side, as microsurface_horizon's far rows: the view's horizon cuts the law on one side, where the
       // 2-point rule's kink is least resolved (4.6 %, 5.1 %; eq. M8 alone 1.65x, 1.40x)
-      {"steep field, grazing view",
-       {0.0, 0.01, {0.0, 0.0}, {0.22, 0.22, 0.0}},
-       glm::dvec2(0.3, 0.3),
-       glm::dvec3(0.0, -std::cos(0.42), std::sin(0.42)),
-       glm::dvec3(0.0, std::cos(0.035), std::sin(0.035)),
-       0.07},
-      {"steep field, view 6 deg",
-       {0.0, 0.01, {0.0, 0.0}, {0.22, 0.22, 0.0}},
-       glm::dvec2(0.3, 0.3),
-       glm::dvec3(0.0, -std::cos(0.42), std::sin(0.42)),
-       glm::dvec3(0.0, std::cos(0.1), std::sin(0.1)),
-       0.07},
-      // the same with the anisotropic lobe across the strip (2.1 %)
-      {"grazing anisotropic",
-       {0.0, 0.01, {0.0, 0.0}, {0.08, 0.02, 0.01}},
-       alpha,
-       glm::dvec3(0.0, -std::cos(e5), std::sin(e5)),
-       glm::dvec3(0.0, std::cos(e5), std::sin(e5)),
-       0.04},
+      {"steep field, grazing view", steep, glm::dvec2(0.3), up(0.42, -1), up(0.035, 1), 0.07},
+      {"steep field, view 6 deg", steep, glm::dvec2(0.3), up(0.42, -1), up(0.1, 1), 0.07},
   };
+
   for (const Case& c : cases) {
     const glm::dvec2 vl = k64::microsurface_angles(c.l), vv = k64::microsurface_angles(c.v);
     const double g2 = k64::gaussian_smith_g2(c.stats.s_mean, c.stats.s_cov, vl.x, vl.y, vv.x, vv.y);
