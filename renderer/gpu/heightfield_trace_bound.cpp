@@ -39,9 +39,9 @@ double height_over(const Plane& plane, glm::dvec3 x) {
   return std::abs(glm::dot(x - plane.point, plane_frame(plane).normal));
 }
 
-// How far from `field`'s plane a shadow ray may start: at a camera or at a point of the scene's geometry (hits
-// are offset by 1e-4 max(1, |p|) along their normal, render/direct_pass.glsl). Infinite where an infinite plane
-// not parallel to the field's reaches every height.
+// How far from `field`'s plane a shadow ray may start: at a point of the scene's geometry (hits are offset by
+// 1e-4 max(1, |p|) along their normal, render/direct_pass.glsl). Infinite where an infinite plane not parallel to
+// the field's reaches every height.
 double shadow_origin_height(const Scene& scene, const Plane& field) {
   const glm::dvec3 n = plane_frame(field).normal;
   double height = 0.0, reach = 1.0;  // reach: the largest |p| of a finite origin
@@ -65,15 +65,17 @@ double shadow_origin_height(const Scene& scene, const Plane& field) {
     }
   }
   // An infinite plane parallel to the field's: a point of it whose ray toward the light meets the field's
-  // range lies within (offset + range) / tan(elevation) of the rectangle; past that reach its offset along
-  // the normal grows by 1e-4 |p|, bounded here by the reach of the farthest such point.
+  // range lies within (offset + relief) / tan(elevation) of the rectangle, so |p| and with it the offset of its
+  // hits along the normal, 1e-4 |p|, are bounded by the reach of the farthest such point.
   const glm::dvec3 l = glm::normalize(scene.light.direction);
   const double sine = std::abs(glm::dot(l, n)), tangent = sine / std::sqrt(std::max(1.0 - sine * sine, 1e-300));
+  const glm::dvec2 z = height_range(std::get<MicrosurfaceMaterial>(scene.materials[field.material]));
+  const double field_relief = std::max(std::abs(z.x), std::abs(z.y));
   for (const Plane& p : scene.planes) {
     if (p.size) continue;
     if (tangent <= 0.0) return kUnbounded;
     const double offset = height_over(field, p.point);
-    const double far = reach + glm::length(*field.size) + (offset + 1.0) / tangent + glm::length(p.point);
+    const double far = reach + glm::length(*field.size) + (offset + field_relief) / tangent + glm::length(p.point);
     height = std::max(height, offset + 1e-4 * far);
   }
   return height * (1.0 + 1e-4) + 1e-4 * reach;
