@@ -84,5 +84,6 @@ FACET_MICROSURFACE_SCENE(microsurface_glossy);
 FACET_MICROSURFACE_SCENE(microsurface_rough_diagonal);
 FACET_MICROSURFACE_SCENE(microsurface_horizon);
 FACET_MICROSURFACE_SCENE(microsurface_steep);
+FACET_MICROSURFACE_SCENE(microsurface_fine_ground);
 
 }  // namespace
