@@ -5,7 +5,6 @@
 #include <bit>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <span>
 #include <string>
 #include <variant>
@@ -41,14 +40,14 @@ int field_shadow_rays(const Scene& scene, const RenderMethod& method) {
   return method.texture >= RenderMethod::Texture::Filtered ? 2 : 1;
 }
 
-// The one-line refusal of rays that could pass the tracer's loop bound (render/heightfield_trace.glsl; lavapipe
-// would cut the loop short without a word): the shadow rays, and the camera ray from `camera` where given.
-void check_traversal(const Scene& scene, int shadow_rays, const std::string& method, std::optional<glm::dvec3> camera) {
-  if (shadow_rays == 0) return;
-  const HeightFieldSampleNodes nodes = heightfield_sample_nodes(scene, camera);
-  const std::int64_t longest = std::max(nodes.camera, nodes.shadow), sample = nodes.camera + shadow_rays * nodes.shadow;
-  const std::string rays = "(camera ray " + std::to_string(nodes.camera) + ", " + std::to_string(shadow_rays) +
-                           " shadow ray" + (shadow_rays > 1 ? "s" : "") + " of " + std::to_string(nodes.shadow) + ")";
+// The one-line refusal of a sample's rays through height fields that could pass the tracer's loop bound
+// (render/heightfield_trace.glsl; lavapipe would cut the loop short without a word): its camera ray's nodes (0
+// where no camera is known yet: `any_camera` says so) and `shadow_rays` shadow rays' of `shadow_nodes` each.
+void check_traversal(std::int64_t camera_nodes, int shadow_rays, std::int64_t shadow_nodes, const std::string& method,
+                     bool any_camera) {
+  const std::int64_t longest = std::max(camera_nodes, shadow_nodes), sample = camera_nodes + shadow_rays * shadow_nodes;
+  const std::string rays = "(camera ray " + std::to_string(camera_nodes) + ", " + std::to_string(shadow_rays) +
+                           " shadow ray" + (shadow_rays > 1 ? "s" : "") + " of " + std::to_string(shadow_nodes) + ")";
   const std::string passed = longest > FACET_HEIGHTFIELD_MAX_STEPS
                                  ? "a ray may visit " + std::to_string(longest) + " MIP nodes " + rays +
                                        ", more than its loop bound of " + std::to_string(FACET_HEIGHTFIELD_MAX_STEPS)
@@ -60,15 +59,17 @@ void check_traversal(const Scene& scene, int shadow_rays, const std::string& met
   if (!passed.empty())
     throw Error(
         "the microsurfaces' height fields span too many texels for the GPU tracer: " + passed + " for " + method +
-        (camera ? "" : " whatever the camera") +
+        (any_camera ? " whatever the camera" : "") +
         " (use coarser texels, a smaller rectangle, a light or camera farther above the field, or --method mip)");
 }
 
 // The scene, checked before the pass uploads or compiles anything: a still's camera with its shadow rays, a
 // camera path's shadow rays (each frame's camera is checked as it renders).
 const Scene& runnable(const Scene& scene, const RenderMethod& method) {
-  check_traversal(scene, field_shadow_rays(scene, method), method.name(),
-                  scene.camera_path ? std::nullopt : std::optional<glm::dvec3>(scene.camera.position));
+  const int shadow_rays = field_shadow_rays(scene, method);
+  if (shadow_rays == 0) return scene;
+  check_traversal(scene.camera_path ? 0 : heightfield_camera_nodes(scene, scene.camera.position), shadow_rays,
+                  heightfield_shadow_nodes(scene), method.name(), scene.camera_path.has_value());
   return scene;
 }
 
@@ -251,6 +252,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
     : scene_(&scene),  // runnable (checked before the plan)
       method_name_(method.name()),
       field_shadow_rays_(field_shadow_rays(scene, method)),
+      field_shadow_nodes_(field_shadow_rays_ > 0 ? heightfield_shadow_nodes(scene) : 0),
       tile_size_(tile_size > 0 && tile_size <= kMaxTileSize
                      ? tile_size
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
@@ -420,7 +422,9 @@ std::vector<const vk::Buffer*> DirectPass::bindings() const {
 Image DirectPass::render(const Camera& camera, int width, int height, RenderStats* stats,
                          const TileProgress& progress) {
   if (width <= 0 || height <= 0) throw Error("image size must be positive");
-  check_traversal(*scene_, field_shadow_rays_, method_name_, camera.position);
+  if (field_shadow_rays_ > 0)
+    check_traversal(heightfield_camera_nodes(*scene_, camera.position), field_shadow_rays_, field_shadow_nodes_,
+                    method_name_, false);
   buffers_.set_camera(*scene_, camera, width, height);
   const std::vector<const vk::Buffer*> bindings = this->bindings();
   Image image(width, height);

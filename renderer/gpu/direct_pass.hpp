@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <future>
 #include <memory>
@@ -81,6 +82,7 @@ class DirectPass {
   const Scene* scene_;
   std::string method_name_;
   int field_shadow_rays_;  // through height fields per sample (0: none traced), for each frame's check
+  std::int64_t field_shadow_nodes_;  // the nodes each may visit (gpu/heightfield_trace_bound.hpp)
   int tile_size_;
   int samples_per_axis_;  // ss:K: K^2 dispatches per tile
   AovSet aovs_;           // the auxiliary channels each frame carries

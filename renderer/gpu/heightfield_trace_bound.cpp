@@ -138,18 +138,27 @@ double heightfield_directed_ray_path(const Plane& plane, double z_lo, double z_h
   return (z_hi - z_lo + 2.0 * margin) * std::sqrt(std::max(1.0 - sine * sine, 0.0)) / sine * (1.0 + 1e-3);
 }
 
-HeightFieldSampleNodes heightfield_sample_nodes(const Scene& scene, std::optional<glm::dvec3> camera) {
-  HeightFieldSampleNodes nodes;
+std::int64_t heightfield_shadow_nodes(const Scene& scene) {
+  std::int64_t nodes = 0;
   for (const Plane& plane : scene.planes) {
     const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
     if (!m || !plane.size) continue;
     const glm::dvec2 z = height_range(*m);
-    const double shadow_path =
+    const double path =
         heightfield_directed_ray_path(plane, z.x, z.y, scene.light.direction, shadow_origin_height(scene, plane));
-    if (camera)
-      nodes.camera += heightfield_trace_nodes(*m, *plane.size,
-                                              heightfield_camera_ray_path(plane, z.x, z.y, *camera) / m->texel_size);
-    nodes.shadow += heightfield_trace_nodes(*m, *plane.size, shadow_path / m->texel_size);
+    nodes += heightfield_trace_nodes(*m, *plane.size, path / m->texel_size);
+  }
+  return nodes;
+}
+
+std::int64_t heightfield_camera_nodes(const Scene& scene, glm::dvec3 camera) {
+  std::int64_t nodes = 0;
+  for (const Plane& plane : scene.planes) {
+    const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
+    if (!m || !plane.size) continue;
+    const glm::dvec2 z = height_range(*m);
+    nodes +=
+        heightfield_trace_nodes(*m, *plane.size, heightfield_camera_ray_path(plane, z.x, z.y, camera) / m->texel_size);
   }
   return nodes;
 }

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -28,12 +27,9 @@ double heightfield_camera_ray_path(const Plane& plane, double z_lo, double z_hi,
 double heightfield_directed_ray_path(const Plane& plane, double z_lo, double z_hi, glm::dvec3 direction,
                                      double origin_height);
 
-// The nodes a sample's rays may visit in all of the scene's height fields: its camera ray from `camera` (none:
-// 0, the shadow rays alone) and each shadow ray toward the light.
-struct HeightFieldSampleNodes {
-  std::int64_t camera = 0;
-  std::int64_t shadow = 0;
-};
-HeightFieldSampleNodes heightfield_sample_nodes(const Scene& scene, std::optional<glm::dvec3> camera);
+// The nodes one shadow ray toward the light may visit in all of the scene's height fields, and one camera ray
+// from `camera`.
+std::int64_t heightfield_shadow_nodes(const Scene& scene);
+std::int64_t heightfield_camera_nodes(const Scene& scene, glm::dvec3 camera);
 
 }  // namespace facet::gpu

@@ -148,12 +148,13 @@ TEST(HeightFieldTrace, FieldsBeyondTheLoopBoundAreRefused) {
     std::get<MicrosurfaceMaterial>(s.materials[0]).texel_size = texel;
     for (double elevation : {0.3, 0.05, 0.045, 0.01, 0.002}) {
       s.light.direction = glm::normalize(glm::dvec3(-1.0, elevation, -0.4));
-      const gpu::HeightFieldSampleNodes nodes = gpu::heightfield_sample_nodes(s, s.camera.position);
+      const std::int64_t camera = gpu::heightfield_camera_nodes(s, s.camera.position);
+      const std::int64_t shadow = gpu::heightfield_shadow_nodes(s);
       std::printf("texel %g, light (-1, %g, -0.4): camera ray %lld nodes, shadow ray %lld\n", texel, elevation,
-                  static_cast<long long>(nodes.camera), static_cast<long long>(nodes.shadow));
+                  static_cast<long long>(camera), static_cast<long long>(shadow));
       for (int shadow_rays : {1, 2}) {
-        const bool fits = std::max(nodes.camera, nodes.shadow) <= FACET_HEIGHTFIELD_MAX_STEPS &&
-                          nodes.camera + shadow_rays * nodes.shadow <= FACET_HEIGHTFIELD_SAMPLE_STEPS;
+        const bool fits = std::max(camera, shadow) <= FACET_HEIGHTFIELD_MAX_STEPS &&
+                          camera + shadow_rays * shadow <= FACET_HEIGHTFIELD_SAMPLE_STEPS;
         const auto method = gpu::RenderMethod::parse(shadow_rays == 1 ? "naive" : "filtered");
         ++outcomes[shadow_rays - 1][fits];
         if (fits) {
