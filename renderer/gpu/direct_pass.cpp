@@ -63,16 +63,6 @@ void check_traversal(std::int64_t camera_nodes, int shadow_rays, std::int64_t sh
         " (use coarser texels, a smaller rectangle, a light or camera farther above the field, or --method mip)");
 }
 
-// The scene, checked before the pass uploads or compiles anything: a still's camera with its shadow rays, a
-// camera path's shadow rays (each frame's camera is checked as it renders).
-const Scene& runnable(const Scene& scene, const RenderMethod& method) {
-  const int shadow_rays = field_shadow_rays(scene, method);
-  if (shadow_rays == 0) return scene;
-  check_traversal(scene.camera_path ? 0 : heightfield_camera_nodes(scene, scene.camera.position), shadow_rays,
-                  heightfield_shadow_nodes(scene), method.name(), scene.camera_path.has_value());
-  return scene;
-}
-
 // Whether the pass accumulates the auxiliary values: asked for, or filtered:adaptive's error estimate.
 bool writes_aovs(const RenderMethod& method) { return method.aovs.any() || method.adaptive_samples_per_axis > 0; }
 
@@ -241,18 +231,30 @@ int tile_count(int width, int height, int tile_size) {
   return ((width + tile_size - 1) / tile_size) * ((height + tile_size - 1) / tile_size);
 }
 
-DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
-                       PhaseTimings* timings)
-    : DirectPass(context, scene, method, tile_size, timings, timed(timings, "diffraction", [&] {
-                   return plan_diffraction(context, runnable(scene, method), method.pass_diffraction());
-                 })) {}
+// A still's camera ray is checked with the shadow rays; a camera path's frames as they render.
+DirectPass::Plan DirectPass::make_plan(vk::Context& context, const Scene& scene, const RenderMethod& method) {
+  Plan plan;
+  plan.field_shadow_rays = field_shadow_rays(scene, method);
+  if (plan.field_shadow_rays > 0) {
+    plan.field_shadow_nodes = heightfield_shadow_nodes(scene);
+    check_traversal(scene.camera_path ? 0 : heightfield_camera_nodes(scene, scene.camera.position),
+                    plan.field_shadow_rays, plan.field_shadow_nodes, method.name(), scene.camera_path.has_value());
+  }
+  plan.diffraction = plan_diffraction(context, scene, method.pass_diffraction());
+  return plan;
+}
 
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
-                       PhaseTimings* timings, DiffractionPlan diffraction)
-    : scene_(&scene),  // runnable (checked before the plan)
+                       PhaseTimings* timings)
+    : DirectPass(context, scene, method, tile_size, timings,
+                 timed(timings, "diffraction", [&] { return make_plan(context, scene, method); })) {}
+
+DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
+                       PhaseTimings* timings, Plan plan)
+    : scene_(&scene),
       method_name_(method.name()),
-      field_shadow_rays_(field_shadow_rays(scene, method)),
-      field_shadow_nodes_(field_shadow_rays_ > 0 ? heightfield_shadow_nodes(scene) : 0),
+      field_shadow_rays_(plan.field_shadow_rays),
+      field_shadow_nodes_(plan.field_shadow_nodes),
       tile_size_(tile_size > 0 && tile_size <= kMaxTileSize
                      ? tile_size
                      : throw Error("tile size must lie in 1.." + std::to_string(kMaxTileSize))),
@@ -266,7 +268,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       // anything of the textures. The thread ends before the constructor does (kernel_ waits for it; so
       // does the future if the reading or the upload throws).
       compiling_(std::async(std::launch::async,
-                            [&context, &scene, &method, spec = specialization(scene, method, diffraction)] {
+                            [&context, &scene, &method, spec = specialization(scene, method, plan.diffraction)] {
                               const std::vector<uint32_t> program = direct_pass_program(scene, method);
                               return std::make_unique<vk::Kernel>(
                                   context, vk::KernelDesc{.name = "render_direct",
@@ -277,7 +279,8 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
                                                           .buffer_kinds = binding_kinds()});
                             })),
       // The tables' words (the table cache's file, or their build), read while the pipeline compiles.
-      diffraction_(timed(timings, "diffraction", [&] { return upload_diffraction(context, std::move(diffraction)); })),
+      diffraction_(
+          timed(timings, "diffraction", [&] { return upload_diffraction(context, std::move(plan.diffraction)); })),
       buffers_(
           timed(timings, "upload",
                 [&] { return upload_scene(context, scene, method.texture == RenderMethod::Texture::FilteredTable); })),

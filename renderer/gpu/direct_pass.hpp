@@ -57,9 +57,19 @@ class DirectPass {
   const DiffractionBuffers& diffraction() const { return diffraction_; }
 
  private:
-  // The constructor's work, once the diffraction is planned (its specialization known before the tables are read).
-  DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
-             PhaseTimings* timings, DiffractionPlan diffraction);
+  // What the pass settles before it uploads or compiles anything: a sample's shadow rays through height fields
+  // (0: none traced) and the nodes each may visit, checked against the tracer's loop bound
+  // (gpu/heightfield_trace_bound.hpp), and the diffraction's plan (its specialization known before the tables are
+  // read).
+  struct Plan {
+    int field_shadow_rays = 0;
+    std::int64_t field_shadow_nodes = 0;
+    DiffractionPlan diffraction;
+  };
+  static Plan make_plan(vk::Context& context, const Scene& scene, const RenderMethod& method);
+  // The constructor's work, once planned.
+  DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size, PhaseTimings* timings,
+             Plan plan);
   std::vector<const vk::Buffer*> bindings() const;  // scene buffers, pixels, diffraction buffers
   // Renders stratum `stratum` of ss:K into pixels_ for the tile's w x h pixels at (x0, y0); its device ms.
   double dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h, int stratum);
@@ -81,8 +91,8 @@ class DirectPass {
 
   const Scene* scene_;
   std::string method_name_;
-  int field_shadow_rays_;  // through height fields per sample (0: none traced), for each frame's check
-  std::int64_t field_shadow_nodes_;  // the nodes each may visit (gpu/heightfield_trace_bound.hpp)
+  int field_shadow_rays_;            // Plan's, for each frame's check of its camera ray
+  std::int64_t field_shadow_nodes_;  // the same
   int tile_size_;
   int samples_per_axis_;  // ss:K: K^2 dispatches per tile
   AovSet aovs_;           // the auxiliary channels each frame carries

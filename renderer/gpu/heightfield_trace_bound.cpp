@@ -81,6 +81,19 @@ double shadow_origin_height(const Scene& scene, const Plane& field) {
   return height * (1.0 + 1e-4) + 1e-4 * reach;
 }
 
+// The nodes one ray may visit in all of the scene's height fields, its path through each (world units across the
+// plane) given by path(plane, the field's height range).
+template <class Path>
+std::int64_t nodes_over_fields(const Scene& scene, Path path) {
+  std::int64_t nodes = 0;
+  for (const Plane& plane : scene.planes) {
+    const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
+    if (!m || !plane.size) continue;
+    nodes += heightfield_trace_nodes(*m, *plane.size, path(plane, height_range(*m)) / m->texel_size);
+  }
+  return nodes;
+}
+
 }  // namespace
 
 std::int64_t heightfield_trace_nodes(const MicrosurfaceMaterial& material, glm::dvec2 patch_size, double path_texels) {
@@ -139,28 +152,14 @@ double heightfield_directed_ray_path(const Plane& plane, double z_lo, double z_h
 }
 
 std::int64_t heightfield_shadow_nodes(const Scene& scene) {
-  std::int64_t nodes = 0;
-  for (const Plane& plane : scene.planes) {
-    const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
-    if (!m || !plane.size) continue;
-    const glm::dvec2 z = height_range(*m);
-    const double path =
-        heightfield_directed_ray_path(plane, z.x, z.y, scene.light.direction, shadow_origin_height(scene, plane));
-    nodes += heightfield_trace_nodes(*m, *plane.size, path / m->texel_size);
-  }
-  return nodes;
+  return nodes_over_fields(scene, [&](const Plane& plane, glm::dvec2 z) {
+    return heightfield_directed_ray_path(plane, z.x, z.y, scene.light.direction, shadow_origin_height(scene, plane));
+  });
 }
 
 std::int64_t heightfield_camera_nodes(const Scene& scene, glm::dvec3 camera) {
-  std::int64_t nodes = 0;
-  for (const Plane& plane : scene.planes) {
-    const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
-    if (!m || !plane.size) continue;
-    const glm::dvec2 z = height_range(*m);
-    nodes +=
-        heightfield_trace_nodes(*m, *plane.size, heightfield_camera_ray_path(plane, z.x, z.y, camera) / m->texel_size);
-  }
-  return nodes;
+  return nodes_over_fields(
+      scene, [&](const Plane& plane, glm::dvec2 z) { return heightfield_camera_ray_path(plane, z.x, z.y, camera); });
 }
 
 }  // namespace facet::gpu
