@@ -90,6 +90,11 @@ DiffractionPlan plan_diffraction(const vk::Context& context, const Scene& scene,
   return plan;
 }
 
+bool orders_fall_back(const DiffractionPlan& plan) {
+  return plan.method == diffraction::DiffractionMethod::Orders &&
+         std::ranges::any_of(plan.materials, [](const GpuDiffractionMaterial& m) { return m.fast_scalars.z == 0.0f; });
+}
+
 DiffractionBuffers upload_diffraction(vk::Context& context, DiffractionPlan plan) {
   FastPathData& fast = plan.fast;
   PreintegratedWords words =

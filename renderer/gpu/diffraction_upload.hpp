@@ -84,6 +84,11 @@ struct DiffractionPlan {
 DiffractionPlan plan_diffraction(const vk::Context& context, const Scene& scene,
                                  const diffraction::DiffractionSettings& settings = {});
 
+// Whether the pass may run the spectral path under `orders`: some material's orders are not restricted
+// (not periodic, or unresolved: F.10, F.11 of docs/diffraction_fast_paths.md; GpuDiffractionMaterial's
+// fast_scalars.z is 0). False under the other methods and without diffraction.
+bool orders_fall_back(const DiffractionPlan& plan);
+
 // The plan's buffers: the preintegrated tables read from the table cache or built (the slow part), then
 // everything uploaded. A scene without diffraction gets one-element placeholders (the pass binds them, its
 // shader never reads them).

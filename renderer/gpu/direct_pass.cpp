@@ -25,11 +25,11 @@ namespace {
 // A tile's workgroups, numbered by 32-bit products in the shader's tile_position, stay within its bound.
 static_assert((kMaxTileSize / FACET_RENDER_WORKGROUP) * (kMaxTileSize / FACET_RENDER_WORKGROUP) <= kMaxTileBlocks);
 
-// The program of the pass: the smallest variant that covers the scene and the method
-// (gpu/direct_pass_variant.hpp). Counting work, the program with its counters' increments
-// (gpu/work_counter.hpp).
-std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod& method) {
-  const std::span<const uint32_t> program = direct_pass_variant(scene, method).spirv;
+// The program of the pass: the smallest variant that covers the scene, the method and, under `orders`,
+// whether some grating falls back to the spectral path (gpu/direct_pass_variant.hpp). Counting work, the
+// program with its counters' increments (gpu/work_counter.hpp).
+std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod& method, bool orders_fall_back) {
+  const std::span<const uint32_t> program = direct_pass_variant(scene, method, orders_fall_back).spirv;
   return method.counts_work ? instrument_work_counts(program) : std::vector<uint32_t>(program.begin(), program.end());
 }
 
@@ -147,7 +147,7 @@ bool mip_texels_are_whole(const Scene& scene) {
 // the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
                                              const DiffractionPlan& diffraction) {
-  const uint32_t code = direct_pass_code(scene, method);
+  const uint32_t code = direct_pass_code(scene, method, orders_fall_back(diffraction));
   const auto has = [code](uint32_t part) { return (code & part) != 0 ? 1u : 0u; };
   const auto constants = std::to_array<vk::SpecConstant>({
       {FACET_RENDER_SPEC_HAS_MICROFLAKE, has(FACET_CODE_MICROFLAKE)},
@@ -268,8 +268,9 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       // anything of the textures. The thread ends before the constructor does (kernel_ waits for it; so
       // does the future if the reading or the upload throws).
       compiling_(std::async(std::launch::async,
-                            [&context, &scene, &method, spec = specialization(scene, method, plan.diffraction)] {
-                              const std::vector<uint32_t> program = direct_pass_program(scene, method);
+                            [&context, &scene, &method, spec = specialization(scene, method, plan.diffraction),
+                             fall_back = orders_fall_back(plan.diffraction)] {
+                              const std::vector<uint32_t> program = direct_pass_program(scene, method, fall_back);
                               return std::make_unique<vk::Kernel>(
                                   context, vk::KernelDesc{.name = "render_direct",
                                                           .spirv = program,

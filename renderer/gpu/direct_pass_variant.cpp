@@ -34,7 +34,7 @@ bool uses(const Scene& scene) {
 
 std::span<const DirectPassVariant> direct_pass_variants() { return kVariants; }
 
-uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method) {
+uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method, bool orders_fall_back) {
   uint32_t code = 0;
   if (uses<ColormapTextureMaterial>(scene)) code |= FACET_CODE_TEXTURE;
   if (uses<DiffractionMaterial>(scene)) code |= FACET_CODE_DIFFRACTION;
@@ -47,7 +47,9 @@ uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method) {
     if (diffraction == diffraction::DiffractionMethod::Preintegrated) code |= FACET_CODE_DIFFRACTION_PREINTEGRATED;
     if (diffraction == diffraction::DiffractionMethod::Orders) code |= FACET_CODE_DIFFRACTION_ORDERS;
     // `orders` runs the spectral path where restricting does not pay (F.10, F.11).
-    if (diffraction != diffraction::DiffractionMethod::Preintegrated) code |= FACET_CODE_DIFFRACTION_SPECTRAL;
+    if (diffraction == diffraction::DiffractionMethod::Spectral ||
+        (diffraction == diffraction::DiffractionMethod::Orders && orders_fall_back))
+      code |= FACET_CODE_DIFFRACTION_SPECTRAL;
   }
   // The filtered methods' code: textures' footprints, microsurfaces' statistics, microflake lobes and
   // `orders` over the pixel.
@@ -71,8 +73,8 @@ const DirectPassVariant& direct_pass_variant(uint32_t code, bool height_fields) 
   return *best;
 }
 
-const DirectPassVariant& direct_pass_variant(const Scene& scene, const RenderMethod& method) {
-  return direct_pass_variant(direct_pass_code(scene, method), traces_height_fields(scene, method));
+const DirectPassVariant& direct_pass_variant(const Scene& scene, const RenderMethod& method, bool orders_fall_back) {
+  return direct_pass_variant(direct_pass_code(scene, method, orders_fall_back), traces_height_fields(scene, method));
 }
 
 }  // namespace facet::gpu

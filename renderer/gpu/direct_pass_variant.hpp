@@ -25,7 +25,10 @@ std::span<const DirectPassVariant> direct_pass_variants();
 
 // The code that rendering `scene` by `method` runs: its material families and primitive kinds, the
 // filtered methods' where the scene has textures or microsurfaces, and its diffraction method's.
-uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method);
+// orders_fall_back: under `orders`, some grating's orders are not restricted (F.10, F.11 of
+// docs/diffraction_fast_paths.md), so the spectral path renders it; the diffraction's plan knows
+// (gpu::orders_fall_back), the scene alone does not.
+uint32_t direct_pass_code(const Scene& scene, const RenderMethod& method, bool orders_fall_back = true);
 
 // naive, ss:K and filtered trace microsurfaces' height fields; mip and colormip shade the flat rectangle.
 bool traces_height_fields(const Scene& scene, const RenderMethod& method);
@@ -34,6 +37,7 @@ bool traces_height_fields(const Scene& scene, const RenderMethod& method);
 const DirectPassVariant& direct_pass_variant(uint32_t code, bool height_fields);
 
 // The variant that renders `scene` by `method`.
-const DirectPassVariant& direct_pass_variant(const Scene& scene, const RenderMethod& method);
+const DirectPassVariant& direct_pass_variant(const Scene& scene, const RenderMethod& method,
+                                             bool orders_fall_back = true);
 
 }  // namespace facet::gpu

@@ -7,9 +7,11 @@
 //   1 preintegrated  the material's wavelength-integrated tables (diffraction_preintegrated_*), a polynomial in w
 //   2 orders     the Taylor BRDF at the wavelengths near the grating's orders (diffraction_observer);
 //                spectral where the host found restricting not worth it (not periodic, or orders unresolved: F.10, F.11)
+//                and compiled the spectral path in (gpu::direct_pass_code: a scene whose orders are all restricted
+//                gets a variant without it)
 // The includer declares kHasDiffraction and kDiffractionMethod before including this file; a variant
 // of the pass compiles in only the methods it covers (render/variant_code.glsl): `preintegrated` alone
-// leaves the spectral path out, which `orders` keeps for its fallback.
+// leaves the spectral path out, which `orders` keeps for its fallback where some material needs it.
 #ifndef FACET_RENDER_DIFFRACTION_SHADING_GLSL
 #define FACET_RENDER_DIFFRACTION_SHADING_GLSL
 #include "layout/diffraction_layout.glsl"
@@ -60,7 +62,8 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
 #endif
 #if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_ORDERS)
     case kDiffractionOrders:
-      if (m.fast_scalars.z != 0.0) {
+      // A variant without the spectral path renders only scenes whose every material's orders are restricted.
+      if (m.fast_scalars.z != 0.0 || !FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_SPECTRAL)) {
         DiffractionOrderLattice lattice = DiffractionOrderLattice(m.order_lattice0.xy, m.order_lattice0.z, m.order_lattice0.w,
                                                                   m.order_lattice1.x, m.order_lattice1.y,
                                                                   m.order_lattice1.z, m.order_lattice1.w,
@@ -72,9 +75,6 @@ vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float vi
       }
       // Not restricted: on to the spectral path, one call site of it for both methods (each call site of
       // an inlined function is compiled on its own).
-#if !FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_SPECTRAL)
-#error "a variant with the orders path needs the spectral path, its fallback"
-#endif
 #endif
 #if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_SPECTRAL)
     case kDiffractionSpectral:

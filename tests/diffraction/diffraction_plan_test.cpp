@@ -64,5 +64,33 @@ TEST(DiffractionPlan, TheUploadBindsThePlannedMethodAndLayout) {
   }
 }
 
+// Under `orders` the pass compiles the spectral path in only where some grating is not restricted (not periodic,
+// or its orders unresolved: F.10, F.11), as the upload marks it (fast_scalars.z = 0).
+TEST(DiffractionPlan, OrdersFallBackOnlyWhereSomeGratingIsNotRestricted) {
+  auto context = test::make_validated_context();
+  const std::filesystem::path scenes = std::filesystem::path(FACET_SOURCE_DIR) / "scenes";
+  const auto falls_back = [&](const Scene& scene, DiffractionMethod m) {
+    gpu::RenderMethod method;
+    method.diffraction.method = m;
+    method.diffraction.wavelengths = 8;
+    return gpu::orders_fall_back(gpu::plan_diffraction(*context, scene, method.diffraction));
+  };
+  Scene plate = load_scene(scenes / "diffraction_plate.json");
+  plate.camera.fov_y_deg = 2.0;
+  EXPECT_FALSE(falls_back(plate, DiffractionMethod::Orders));  // periodic, its orders resolved
+  EXPECT_FALSE(falls_back(plate, DiffractionMethod::Spectral));
+  EXPECT_FALSE(falls_back(plate, DiffractionMethod::Preintegrated));
+  EXPECT_TRUE(falls_back(load_scene(scenes / "diffraction_random.json"), DiffractionMethod::Orders));  // F.10
+  EXPECT_TRUE(falls_back(load_scene(scenes / "snake_fingers.json"), DiffractionMethod::Orders));       // F.11
+  // One grating without orders among periodic ones, even unused, brings the fallback back.
+  Scene mixed = load_scene(scenes / "diffraction_plate.json",
+                           {R"(materials.random={"type": "diffraction", "grating": {"type": "heightmap",
+                               "path": "gratings/random_heights.exr", "channel": "R", "nm_per_sample": 62.5,
+                               "nm_per_unit": 1, "coherence_um": 4}, "tolerance": 0.001})"});
+  mixed.camera.fov_y_deg = 2.0;
+  EXPECT_TRUE(falls_back(mixed, DiffractionMethod::Orders));
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
 }  // namespace diffraction_plan_test
 }  // namespace facet

@@ -70,7 +70,10 @@ TEST(DirectPassVariants, ScenesNeedTheirFamiliesPrimitivesAndMethods) {
   EXPECT_EQ(gpu::direct_pass_code(load_scene(kScenes / "snake_fingers.json"), orders),
             uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_SPECTRAL | FACET_CODE_DIFFRACTION_ORDERS |
                      FACET_CODE_TRIANGLES});
-  RenderMethod preintegrated = orders;  // the one method without the spectral path
+  // Where every grating's orders are restricted (the plan knows), `orders` needs no spectral path.
+  EXPECT_EQ(gpu::direct_pass_code(load_scene(kScenes / "diffraction_spheres.json"), orders, false),
+            uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_ORDERS | FACET_CODE_SPHERES});
+  RenderMethod preintegrated = orders;  // never the spectral path
   preintegrated.diffraction.method = diffraction::DiffractionMethod::Preintegrated;
   EXPECT_EQ(gpu::direct_pass_code(load_scene(kScenes / "diffraction_plate.json"), preintegrated),
             uint32_t{FACET_CODE_DIFFRACTION | FACET_CODE_DIFFRACTION_PREINTEGRATED});
@@ -125,6 +128,34 @@ TEST(DirectPassVariants, TheFallbackRendersTheSameBitsAsTheSmallVariant) {
   for (size_t i = 0; i < small.pixel_count(); ++i)
     if (small.at(i) != fallback.at(i)) ++differing;
   EXPECT_EQ(differing, 0);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+// A periodic grating under `orders` takes a variant without the spectral path; an unused grating without
+// orders brings it back (gpu::orders_fall_back), and both render the same bits.
+TEST(DirectPassVariants, OrdersWithoutTheSpectralPathRenderTheSameBits) {
+  auto context = test::make_validated_context();
+  const auto file = kScenes / "diffraction_plate.json";
+  const Scene plain = load_scene(file);
+  const Scene mixed = load_scene(file, {R"(materials.random={"type": "diffraction", "grating": {"type": "heightmap",
+      "path": "gratings/random_heights.exr", "channel": "R", "nm_per_sample": 62.5, "nm_per_unit": 1,
+      "coherence_um": 4}, "tolerance": 0.001})"});
+  for (const char* name : {"naive", "filtered"}) {
+    SCOPED_TRACE(name);
+    RenderMethod method = RenderMethod::parse(name);
+    method.diffraction.method = diffraction::DiffractionMethod::Orders;
+    EXPECT_EQ(gpu::direct_pass_variant(plain, method, false).code & FACET_CODE_DIFFRACTION_SPECTRAL, 0u);
+    const Image alone = gpu::render_direct(*context, plain, 48, 48, method);
+    const Image with_fallback = gpu::render_direct(*context, mixed, 48, 48, method);
+    ASSERT_EQ(alone.pixel_count(), with_fallback.pixel_count());
+    int differing = 0, lit = 0;
+    for (size_t i = 0; i < alone.pixel_count(); ++i) {
+      if (alone.at(i) != with_fallback.at(i)) ++differing;
+      if (alone.at(i).r > 0.05f) ++lit;
+    }
+    EXPECT_EQ(differing, 0);
+    EXPECT_GT(lit, 0);  // the frame shows diffracted colour, not only the base albedo
+  }
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
