@@ -14,6 +14,7 @@
 #include "gpu/adaptive_refinement.hpp"
 #include "gpu/direct_pass_variant.hpp"
 #include "gpu/heightfield_trace_bound.hpp"
+#include "gpu/pixel_coverage.hpp"
 #include "gpu/render_layout.hpp"
 #include "gpu/work_counter.hpp"
 #include "gpu/workgroup_order.hpp"
@@ -223,6 +224,15 @@ AovPixel aov_pixel(const PixelPlanes& sums, float hits, int k) {
   p.error = uv_error.z / static_cast<float>(k * k);
   p.texture_term = uv_error.w > 0.0f;
   return p;
+}
+
+// What the pass writes for a pixel all of whose k^2 strata miss (render/direct_pass.glsl, main): the
+// background, its strata added in order and the sum divided once, coverage 0; its auxiliary sums are 0.
+vec4 missed_pixel(glm::dvec3 background, int k) {
+  const vec4 sample(glm::vec3(background), 0.0f);
+  vec4 sum = sample;
+  for (int s = 1; s < k * k; ++s) sum = sum + sample;
+  return sum / static_cast<float>(k * k);
 }
 
 }  // namespace
@@ -439,21 +449,31 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   std::vector<AovPixel> aovs(writes_aovs_ ? image.pixel_count() : 0);
   RenderStats local;
   const int tiles = tile_count(width, height, tile_size_);
+  // Each tile dispatches only the rectangle whose rays may meet the scene; the rest is background, written
+  // here. Counting work keeps every pixel's own count (a miss's path too).
+  const PixelCoverage coverage(*scene_, camera, width, height);
+  const vec4 missed = missed_pixel(scene_->background, k);
   for (int y0 = 0; y0 < height; y0 += tile_size_)
     for (int x0 = 0; x0 < width; x0 += tile_size_) {
-      const int w = std::min(tile_size_, width - x0), h = std::min(tile_size_, height - y0);
-      for (int s = 0; s < k * k; ++s)                              // ss:K: one stratum per dispatch,
-        local.gpu_ms += dispatch_tile(bindings, x0, y0, w, h, s);  // accumulated in pixels_
-      const size_t n = static_cast<size_t>(w) * h;
-      pixels_.download(tile_pixels.data(), sizeof(vec4) * planes * n);
-      for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-          const size_t i = static_cast<size_t>(y) * w + x, at = image.index(x0 + x, y0 + y);
-          const vec4 pixel = tile_pixels[i];
+      const PixelRect tile{x0, y0, std::min(x0 + tile_size_, width), std::min(y0 + tile_size_, height)};
+      const PixelRect r = counts_work_ ? tile : coverage.covered(tile);
+      const size_t n = r.empty() ? 0 : static_cast<size_t>(r.width()) * r.height();
+      if (n > 0) {
+        for (int s = 0; s < k * k; ++s)  // ss:K: one stratum per dispatch, accumulated in pixels_
+          local.gpu_ms += dispatch_tile(bindings, r.x0, r.y0, r.width(), r.height(), s);
+        pixels_.download(tile_pixels.data(), sizeof(vec4) * planes * n);
+      }
+      for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x) {
+          const size_t at = image.index(x, y);
+          const bool dispatched = x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
+          const size_t i = dispatched ? static_cast<size_t>(y - r.y0) * r.width() + (x - r.x0) : 0;
+          const vec4 pixel = dispatched ? tile_pixels[i] : missed;
           image.set(at, glm::vec3(pixel));
           image.alpha[at] = pixel.a;
           if (writes_aovs_)
-            aovs[at] = aov_pixel(pixel_planes(tile_pixels, i, n), std::round(pixel.a * float(k * k)), k);
+            aovs[at] = aov_pixel(dispatched ? pixel_planes(tile_pixels, i, n) : PixelPlanes{missed},
+                                 std::round(pixel.a * float(k * k)), k);
         }
       ++local.tiles;
       if (progress) progress(local.tiles, tiles);

@@ -10,6 +10,12 @@
 
 namespace facet::gpu {
 
+glm::dvec2 heightfield_height_range(const MicrosurfaceMaterial& m) {
+  const auto [lo, hi] = std::minmax_element(m.heights->values.begin(), m.heights->values.end());
+  const double a = m.height_scale * *lo, b = m.height_scale * *hi;
+  return {std::min(a, b), std::max(a, b)};
+}
+
 namespace {
 
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
@@ -18,21 +24,6 @@ constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 // stored heights' mean (render/heightfield_trace.glsl): at most this, with room for float rounding.
 double tracer_margin(double origin_height, double z_lo, double z_hi) {
   return 2e-5 * (origin_height + 4.0 * (std::abs(z_lo) + std::abs(z_hi)));
-}
-
-std::array<glm::dvec3, 4> rectangle_corners(const Plane& plane) {
-  const PlaneFrame f = plane_frame(plane);
-  const glm::dvec2 half = *plane.size * 0.5;
-  return {
-      plane.point - half.x * f.tangent - half.y * f.bitangent, plane.point + half.x * f.tangent - half.y * f.bitangent,
-      plane.point - half.x * f.tangent + half.y * f.bitangent, plane.point + half.x * f.tangent + half.y * f.bitangent};
-}
-
-// Heights of the field's vertices along the plane's normal (bilinear cells stay within their corners').
-glm::dvec2 height_range(const MicrosurfaceMaterial& m) {
-  const auto [lo, hi] = std::minmax_element(m.heights->values.begin(), m.heights->values.end());
-  const double a = m.height_scale * *lo, b = m.height_scale * *hi;
-  return {std::min(a, b), std::max(a, b)};
 }
 
 double height_over(const Plane& plane, glm::dvec3 x) {
@@ -56,10 +47,10 @@ double shadow_origin_height(const Scene& scene, const Plane& field) {
     if (p.size) {
       double relief = 0.0;
       if (const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[p.material])) {
-        const glm::dvec2 z = height_range(*m);
+        const glm::dvec2 z = heightfield_height_range(*m);
         relief = std::max(std::abs(z.x), std::abs(z.y));
       }
-      for (const glm::dvec3& c : rectangle_corners(p)) take(c, relief);
+      for (const glm::dvec3& c : plane_rectangle_corners(p)) take(c, relief);
     } else if (glm::length(glm::cross(plane_frame(p).normal, n)) > 1e-12) {
       return kUnbounded;
     }
@@ -69,7 +60,7 @@ double shadow_origin_height(const Scene& scene, const Plane& field) {
   // hits along the normal, 1e-4 |p|, are bounded by the reach of the farthest such point.
   const glm::dvec3 l = glm::normalize(scene.light.direction);
   const double sine = std::abs(glm::dot(l, n)), tangent = sine / std::sqrt(std::max(1.0 - sine * sine, 1e-300));
-  const glm::dvec2 z = height_range(std::get<MicrosurfaceMaterial>(scene.materials[field.material]));
+  const glm::dvec2 z = heightfield_height_range(std::get<MicrosurfaceMaterial>(scene.materials[field.material]));
   const double field_relief = std::max(std::abs(z.x), std::abs(z.y));
   for (const Plane& p : scene.planes) {
     if (p.size) continue;
@@ -89,7 +80,7 @@ std::int64_t nodes_over_fields(const Scene& scene, Path path) {
   for (const Plane& plane : scene.planes) {
     const auto* m = std::get_if<MicrosurfaceMaterial>(&scene.materials[plane.material]);
     if (!m || !plane.size) continue;
-    nodes += heightfield_trace_nodes(*m, *plane.size, path(plane, height_range(*m)) / m->texel_size);
+    nodes += heightfield_trace_nodes(*m, *plane.size, path(plane, heightfield_height_range(*m)) / m->texel_size);
   }
   return nodes;
 }
@@ -134,7 +125,7 @@ double heightfield_camera_ray_path(const Plane& plane, double z_lo, double z_hi,
   // the plane from the origin, so it descends by at least gap over that distance, and crosses the range's
   // thickness over at most thickness / gap times it.
   double farthest = 0.0;
-  for (const glm::dvec3& c : rectangle_corners(plane)) {
+  for (const glm::dvec3& c : plane_rectangle_corners(plane)) {
     const glm::dvec3 rel = c - origin;
     farthest = std::max(farthest, glm::length(rel - glm::dot(rel, n) * n));
   }

@@ -13,6 +13,10 @@
 
 namespace facet::gpu {
 
+// The heights of the field's vertices along its plane's normal, lowest and highest (bilinear cells stay within
+// their corners').
+glm::dvec2 heightfield_height_range(const MicrosurfaceMaterial& material);
+
 // An upper bound on the MIP nodes one ray visits in the field of `material` tiled over a rectangle of
 // `patch_size` (world units), where the ray's segment within the field's height range runs at most
 // `path_texels` texels across the rectangle (infinity: anywhere across it).

@@ -1,6 +1,7 @@
 // The tangent frame of a plane: the uv axes of its surface coordinates (scene.hpp, Plane).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -31,6 +32,15 @@ inline PlaneFrame plane_frame(const Plane& plane) {
   }
   const glm::dvec3 t = glm::normalize(plane.tangent - glm::dot(plane.tangent, n) * n);
   return {t, glm::cross(n, t), n};
+}
+
+// The four corners of a finite plane's rectangle (plane.size set).
+inline std::array<glm::dvec3, 4> plane_rectangle_corners(const Plane& plane) {
+  const PlaneFrame f = plane_frame(plane);
+  const glm::dvec2 half = *plane.size * 0.5;
+  return {
+      plane.point - half.x * f.tangent - half.y * f.bitangent, plane.point + half.x * f.tangent - half.y * f.bitangent,
+      plane.point - half.x * f.tangent + half.y * f.bitangent, plane.point + half.x * f.tangent + half.y * f.bitangent};
 }
 
 }  // namespace facet
