@@ -377,13 +377,17 @@ double DirectPass::refine_group(std::span<const vk::Buffer* const> bindings, std
 }
 
 void DirectPass::refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
-                        std::span<const float> edge, RenderStats& stats) {
+                        std::span<const float> edge, RenderStats& stats, std::size_t dispatched) {
   std::vector<PixelEstimate> estimates(aovs.size());
   double first_work = 0.0;
   for (size_t i = 0; i < aovs.size(); ++i) {
     estimates[i] = {aovs[i].error, edge[i], aovs[i].texture_term};
     first_work += refinement_cost(1, aovs[i].texture_term);
   }
+  // The background's pixels were not dispatched (no texture term: one ray's cost each); a frame of background
+  // alone has nothing to refine and its unit of work is priced by the first refinement.
+  first_work -= static_cast<double>(aovs.size() - dispatched) * refinement_cost(1, false);
+  first_work = std::max(first_work, refinement_cost(1, false));
   // Until measured, a unit of refinement work costs what it costs in the first pass.
   double ms_per_work = stats.gpu_ms / first_work, refine_ms = 0.0, work_done = 0.0;
   const std::optional<double> time_ms = adaptive_budget_.time_ms;
@@ -453,11 +457,13 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   // here. Counting work keeps every pixel's own count (a miss's path too).
   const PixelCoverage coverage(*scene_, camera, width, height);
   const vec4 missed = missed_pixel(scene_->background, k);
+  size_t dispatched = 0;
   for (int y0 = 0; y0 < height; y0 += tile_size_)
     for (int x0 = 0; x0 < width; x0 += tile_size_) {
       const PixelRect tile{x0, y0, std::min(x0 + tile_size_, width), std::min(y0 + tile_size_, height)};
       const PixelRect r = counts_work_ ? tile : coverage.covered(tile);
       const size_t n = r.empty() ? 0 : static_cast<size_t>(r.width()) * r.height();
+      dispatched += n;
       if (n > 0) {
         for (int s = 0; s < k * k; ++s)  // ss:K: one stratum per dispatch, accumulated in pixels_
           local.gpu_ms += dispatch_tile(bindings, r.x0, r.y0, r.width(), r.height(), s);
@@ -481,7 +487,7 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   if (aovs_.error || adaptive_samples_per_axis_ > 0) {
     const std::vector<float> edge = edge_error(image, aovs, k);
     for (size_t i = 0; i < aovs.size(); ++i) aovs[i].error += edge[i];
-    if (adaptive_samples_per_axis_ > 0) refine(bindings, image, aovs, edge, local);
+    if (adaptive_samples_per_axis_ > 0) refine(bindings, image, aovs, edge, local, dispatched);
   }
   if (aovs_.any()) {
     const size_t first = add_aov_channels(image, aovs_);

@@ -85,9 +85,9 @@ class DirectPass {
   uint32_t skips_estimate(bool refining) const;
   // filtered:adaptive: renders the pixels the budget buys (gpu/adaptive_refinement.hpp: from aovs[i].error
   // and the first pass's edge term `edge`) again, each with its K x K strata, into `image` and `aovs`;
-  // `stats` holds the first pass's time.
+  // `stats` holds the first pass's time, spent on `dispatched` of the pixels (the rest were background).
   void refine(std::span<const vk::Buffer* const> bindings, Image& image, std::vector<AovPixel>& aovs,
-              std::span<const float> edge, RenderStats& stats);
+              std::span<const float> edge, RenderStats& stats, std::size_t dispatched);
 
   const Scene* scene_;
   std::string method_name_;
