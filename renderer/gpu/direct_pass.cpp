@@ -262,6 +262,7 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
 DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size,
                        PhaseTimings* timings, Plan plan)
     : scene_(&scene),
+      bounds_(scene),
       method_name_(method.name()),
       field_shadow_rays_(plan.field_shadow_rays),
       field_shadow_nodes_(plan.field_shadow_nodes),
@@ -455,7 +456,7 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
   const int tiles = tile_count(width, height, tile_size_);
   // Each tile dispatches only the rectangle whose rays may meet the scene; the rest is background, written
   // here. Counting work keeps every pixel's own count (a miss's path too).
-  const PixelCoverage coverage(*scene_, camera, width, height);
+  const PixelCoverage coverage(bounds_, camera, width, height);
   const vec4 missed = missed_pixel(scene_->background, k);
   size_t dispatched = 0;
   for (int y0 = 0; y0 < height; y0 += tile_size_)
@@ -472,13 +473,13 @@ Image DirectPass::render(const Camera& camera, int width, int height, RenderStat
       for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
           const size_t at = image.index(x, y);
-          const bool dispatched = x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
-          const size_t i = dispatched ? static_cast<size_t>(y - r.y0) * r.width() + (x - r.x0) : 0;
-          const vec4 pixel = dispatched ? tile_pixels[i] : missed;
+          const bool rendered = x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
+          const size_t i = rendered ? static_cast<size_t>(y - r.y0) * r.width() + (x - r.x0) : 0;
+          const vec4 pixel = rendered ? tile_pixels[i] : missed;
           image.set(at, glm::vec3(pixel));
           image.alpha[at] = pixel.a;
           if (writes_aovs_)
-            aovs[at] = aov_pixel(dispatched ? pixel_planes(tile_pixels, i, n) : PixelPlanes{missed},
+            aovs[at] = aov_pixel(rendered ? pixel_planes(tile_pixels, i, n) : PixelPlanes{missed},
                                  std::round(pixel.a * float(k * k)), k);
         }
       ++local.tiles;

@@ -13,6 +13,7 @@
 
 #include "common/phase_timings.hpp"
 #include "gpu/diffraction_upload.hpp"
+#include "gpu/pixel_coverage.hpp"
 #include "gpu/render_method.hpp"
 #include "gpu/scene_upload.hpp"
 #include "image/image.hpp"
@@ -90,6 +91,7 @@ class DirectPass {
               std::span<const float> edge, RenderStats& stats, std::size_t dispatched);
 
   const Scene* scene_;
+  SceneBounds bounds_;  // what each frame's tiles are cut to (gpu/pixel_coverage.hpp)
   std::string method_name_;
   int field_shadow_rays_;            // Plan's, for each frame's check of its camera ray
   std::int64_t field_shadow_nodes_;  // the same

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <span>
 #include <variant>
 
 #include "gpu/heightfield_trace_bound.hpp"
@@ -40,11 +39,9 @@ PixelRect pixels_of(glm::dvec2 lo, glm::dvec2 hi, int width, int height) {
           clamped_floor(hi.x, -1, width) + 1 + kMarginPixels, clamped_floor(hi.y, -1, height) + 1 + kMarginPixels};
 }
 
-// The corners of a box that holds each kind of object: a sphere's axis-aligned cube, a mesh's vertex bounds,
-// a rectangle (its height field's range along the normal, widened by the tracer's margin, where it has one).
-std::vector<glm::dvec3> axis_box(glm::dvec3 lo, glm::dvec3 hi) {
-  std::vector<glm::dvec3> corners;
-  for (int i = 0; i < 8; ++i) corners.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
+SceneBounds::Box axis_box(glm::dvec3 lo, glm::dvec3 hi) {
+  SceneBounds::Box corners;
+  for (int i = 0; i < 8; ++i) corners[i] = {i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z};
   return corners;
 }
 
@@ -57,22 +54,40 @@ glm::dvec2 rectangle_heights(const Scene& scene, const Plane& plane) {
   return z + glm::dvec2(-margin, margin);
 }
 
-std::vector<glm::dvec3> rectangle_box(const Plane& plane, glm::dvec2 heights) {
-  const glm::dvec3 n = plane_frame(plane).normal;
-  std::vector<glm::dvec3> corners;
+SceneBounds::Box rectangle_box(const Plane& plane, glm::dvec3 n, glm::dvec2 heights) {
+  SceneBounds::Box corners;
+  int i = 0;
   for (const glm::dvec3& c : plane_rectangle_corners(plane))
-    for (double h : {heights.x, heights.y}) corners.push_back(c + h * n);
+    for (double h : {heights.x, heights.y}) corners[i++] = c + h * n;
   return corners;
 }
 
 }  // namespace
 
-PixelCoverage::PixelCoverage(const Scene& scene, const Camera& camera, int width, int height) {
+SceneBounds::SceneBounds(const Scene& scene) {
+  for (const Sphere& s : scene.spheres) boxes.push_back(axis_box(s.center - s.radius, s.center + s.radius));
+  for (const Mesh& m : scene.meshes) {
+    if (m.positions.empty()) continue;
+    glm::dvec3 lo = m.positions.front(), hi = lo;
+    for (const glm::dvec3& p : m.positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    boxes.push_back(axis_box(lo, hi));
+  }
+  for (const Plane& p : scene.planes) {
+    const glm::dvec3 n = plane_frame(p).normal;
+    const glm::dvec2 heights = p.size ? rectangle_heights(scene, p) : glm::dvec2(0.0);
+    planes.push_back({p.point, n, heights, p.size ? std::optional(rectangle_box(p, n, heights)) : std::nullopt});
+  }
+}
+
+PixelCoverage::PixelCoverage(const SceneBounds& bounds, const Camera& camera, int width, int height)
+    : frame_{0, 0, width, height} {
   const CameraFrame f = camera_frame(camera, width, height);
-  const PixelRect frame{0, 0, width, height};
   // The pixels of a box's corners' film positions (d(film) = forward + ndc.x right - ndc.y up is parallel to
   // x - origin); none where a corner lies behind the camera, as the box may then appear anywhere.
-  const auto project = [&](std::span<const glm::dvec3> corners) -> std::optional<PixelRect> {
+  const auto project = [&](const SceneBounds::Box& corners) -> std::optional<PixelRect> {
     glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
     for (const glm::dvec3& x : corners) {
       const glm::dvec3 v = x - f.origin;
@@ -84,41 +99,28 @@ PixelCoverage::PixelCoverage(const Scene& scene, const Camera& camera, int width
       lo = glm::min(lo, film);
       hi = glm::max(hi, film);
     }
-    return intersect(pixels_of(lo, hi, width, height), frame);
+    return intersect(pixels_of(lo, hi, width, height), frame_);
   };
-  const auto take_box = [&](std::span<const glm::dvec3> corners) {
-    objects_.push_back(project(corners).value_or(frame));
-  };
-  for (const Sphere& s : scene.spheres) take_box(axis_box(s.center - s.radius, s.center + s.radius));
-  for (const Mesh& m : scene.meshes) {
-    if (m.positions.empty()) continue;
-    glm::dvec3 lo = m.positions.front(), hi = lo;
-    for (const glm::dvec3& p : m.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    take_box(axis_box(lo, hi));
-  }
+  for (const SceneBounds::Box& box : bounds.boxes) objects_.push_back(project(box).value_or(frame_));
   // A ray from outside the slab of heights [z_lo, z_hi] over a plane meets it only if it approaches the plane:
   // side (d . n) < 0, affine in the film. Infinite planes, and rectangles that reach behind the camera (a ground
   // under it), are bounded so; a camera within the slab sees it anywhere.
   const glm::dvec3 corner = f.forward - f.right + f.up;  // d at film (0, 0)
-  for (const Plane& p : scene.planes) {
-    const glm::dvec2 heights = p.size ? rectangle_heights(scene, p) : glm::dvec2(0.0);
-    if (p.size)
-      if (const std::optional<PixelRect> r = project(rectangle_box(p, heights))) {
+  for (const SceneBounds::PlaneSlab& p : bounds.planes) {
+    if (p.box)
+      if (const std::optional<PixelRect> r = project(*p.box)) {
         objects_.push_back(*r);
         continue;
       }
-    const glm::dvec3 n = glm::normalize(p.normal);
+    const glm::dvec3 n = p.normal;
     const double elevation = glm::dot(f.origin - p.point, n);
     const double margin = 1e-12 * (1.0 + glm::length(f.origin) + glm::length(p.point));
-    if (elevation > heights.y + margin || elevation < heights.x - margin) {
-      const double s = elevation > heights.y ? 1.0 : -1.0;
+    if (elevation > p.heights.y + margin || elevation < p.heights.x - margin) {
+      const double s = elevation > p.heights.y ? 1.0 : -1.0;
       half_planes_.push_back({s * glm::dot(corner, n),
                               s * glm::dvec2(2.0 / width * glm::dot(f.right, n), -2.0 / height * glm::dot(f.up, n))});
     } else {
-      objects_.push_back(frame);
+      objects_.push_back(frame_);
     }
   }
 }
@@ -141,7 +143,7 @@ PixelRect PixelCoverage::covered(PixelRect tile) const {
       if (va <= 0.0) take(a);
       if ((va < 0.0) != (vb < 0.0) && va != vb) take(a + (b - a) * (va / (va - vb)));
     }
-    if (lo.x <= hi.x) cover = unite(cover, intersect(pixels_of(lo, hi, tile.x1, tile.y1), tile));
+    if (lo.x <= hi.x) cover = unite(cover, intersect(pixels_of(lo, hi, frame_.x1, frame_.y1), tile));
   }
   return cover;
 }

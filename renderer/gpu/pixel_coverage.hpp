@@ -5,6 +5,8 @@
 // of the pixel's square) can hit an object lies inside.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -22,10 +24,25 @@ struct PixelRect {
   bool operator==(const PixelRect&) const = default;
 };
 
+// What holds the scene's objects, whatever the camera (made once per pass; a mesh's box reads all its vertices, a
+// height field's range all its heights).
+struct SceneBounds {
+  using Box = std::array<glm::dvec3, 8>;
+  struct PlaneSlab {
+    glm::dvec3 point, normal;  // unit normal
+    glm::dvec2 heights;        // the slab along the normal: a height field's range widened by the tracer's margin, or 0
+    std::optional<Box> box;    // a rectangle's (its slab over it); none for an infinite plane
+  };
+  std::vector<Box> boxes;  // each sphere's cube and each mesh's vertex box
+  std::vector<PlaneSlab> planes;
+
+  explicit SceneBounds(const Scene& scene);
+};
+
 class PixelCoverage {
  public:
   // The frame of `camera` at width × height pixels.
-  PixelCoverage(const Scene& scene, const Camera& camera, int width, int height);
+  PixelCoverage(const SceneBounds& bounds, const Camera& camera, int width, int height);
 
   // The smallest rectangle within `tile` outside which no camera ray of the tile meets any object (empty: none does).
   PixelRect covered(PixelRect tile) const;
@@ -36,6 +53,7 @@ class PixelCoverage {
     double a;
     glm::dvec2 b;
   };
+  PixelRect frame_;
   std::vector<PixelRect> objects_;      // each object's pixels bounded by its box (the whole frame if unbounded)
   std::vector<HalfPlane> half_planes_;  // each plane's bounded by the rays that approach it
 };

@@ -20,6 +20,7 @@ namespace pixel_coverage_test {
 
 using gpu::PixelCoverage;
 using gpu::PixelRect;
+using gpu::SceneBounds;
 
 // Every pixel the reference (5 x 5 sub-pixel centres) sees anything in lies in its tile's covered rectangle.
 void expect_covers_what_the_reference_sees(const Scene& scene, int width, int height) {
@@ -29,7 +30,7 @@ void expect_covers_what_the_reference_sees(const Scene& scene, int width, int he
   options.grid = 5;
   options.jitter = false;
   const Image reference = cpu::render_reference(scene, options);
-  const PixelCoverage coverage(scene, scene.camera, width, height);
+  const PixelCoverage coverage(SceneBounds{scene}, scene.camera, width, height);
   int seen = 0;
   for (int tile : {4, 16, 64}) {
     for (int y0 = 0; y0 < height; y0 += tile)
@@ -77,7 +78,7 @@ TEST(PixelCoverage, LeavesOutWhatNoRayReaches) {
   scene.planes.clear();
   scene.spheres = {{{0.0, 0.7, 0.0}, 0.5, 0}};  // seen straight on, in the middle of the frame
   scene.camera.target = {0.0, 0.7, 0.0};
-  const PixelCoverage coverage(scene, scene.camera, 160, 90);
+  const PixelCoverage coverage(SceneBounds{scene}, scene.camera, 160, 90);
   EXPECT_TRUE(coverage.covered({0, 0, 16, 16}).empty());
   EXPECT_TRUE(coverage.covered({144, 74, 160, 90}).empty());
   const PixelRect whole = coverage.covered({0, 0, 160, 90});
@@ -89,7 +90,7 @@ TEST(PixelCoverage, LeavesOutWhatNoRayReaches) {
   scene = test::lambert_spheres_scene();
   scene.spheres.clear();
   scene.camera.target = {0.0, 1.5, 0.0};  // level: the horizon is the middle row
-  const PixelCoverage ground(scene, scene.camera, 160, 90);
+  const PixelCoverage ground(SceneBounds{scene}, scene.camera, 160, 90);
   EXPECT_TRUE(ground.covered({0, 0, 160, 40}).empty());
   EXPECT_EQ(ground.covered({0, 50, 160, 90}), (PixelRect{0, 50, 160, 90}));
   const PixelRect across = ground.covered({0, 40, 160, 50});
@@ -100,12 +101,13 @@ TEST(PixelCoverage, LeavesOutWhatNoRayReaches) {
   Scene field = load_scene(kScenes / "microsurface_terrain.json");
   field.planes.front().size = glm::dvec2(40.0, 40.0);
   field.camera.target = field.camera.position + glm::dvec3(0.0, 0.0, -1.0);
-  const PixelCoverage above(field, field.camera, 160, 90);
+  const PixelCoverage above(SceneBounds{field}, field.camera, 160, 90);
   EXPECT_TRUE(above.covered({0, 0, 160, 40}).empty());
   EXPECT_EQ(above.covered({0, 50, 160, 90}), (PixelRect{0, 50, 160, 90}));
   field.camera.position.y = 0.0;  // the terrain's heights span about +-3 sigma_h = +-36 mm around 0
   field.camera.target.y = 0.0;
-  EXPECT_EQ(PixelCoverage(field, field.camera, 160, 90).covered({0, 0, 160, 40}), (PixelRect{0, 0, 160, 40}));
+  EXPECT_EQ(PixelCoverage(SceneBounds{field}, field.camera, 160, 90).covered({0, 0, 160, 40}),
+            (PixelRect{0, 0, 160, 40}));
 }
 
 // Frames do not depend on where tiles cut the covered pixels: pixels written as background by the host in one
@@ -133,7 +135,7 @@ TEST(PixelCoverage, FramesAreTheSameWhereverTilesCutThem) {
     }
   }
   // At 8 x 8 tiles whole tiles are left out, so the comparison above met background written by the host.
-  const PixelCoverage coverage(scene, scene.camera, 70, 45);
+  const PixelCoverage coverage(SceneBounds{scene}, scene.camera, 70, 45);
   EXPECT_TRUE(coverage.covered({0, 0, 8, 8}).empty());
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
