@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -145,3 +147,40 @@ TEST(GaussianMasking, VisibleHeightSampleInvertsTheCdf) {
 }
 
 }  // namespace
+
+// The float Lambda(t) (one Chebyshev series, no loop: docs/masking.md, "Lambda in float") against the closed
+// form in long double at the same float t (a = t/sqrt2), relative. Its own error: the fit (1.3e-8), the series'
+// rounding (sum |c_k| eps_f < 6e-7 of k(t) (9 + t^2) >= 1) and exp's argument t^2/2 rounded (eps_f t^2/2).
+TEST(GaussianMasking, FloatLambdaOfTMatchesTheClosedForm) {
+  double worst = 0, worst_t = 0;
+  float previous = std::numeric_limits<float>::infinity();
+  for (int i = 0; i <= 4000; ++i) {
+    const float t = static_cast<float>(1e-4 * std::pow(12.0 / 1e-4, i / 4000.0));
+    const long double a = static_cast<long double>(t) / std::numbers::sqrt2_v<long double>;
+    const long double ref = (std::exp(-a * a) / (a * std::sqrt(std::numbers::pi_v<long double>)) - std::erfc(a)) / 2;
+    const float got = f32::gaussian_smith_lambda_of_t(t);
+    const double error = static_cast<double>(std::abs(got / ref - 1));
+    const double bound = 1e-6 + 0x1p-24 * double(t) * double(t);
+    if (error / bound > worst) {
+      worst = error / bound;
+      worst_t = t;
+    }
+    EXPECT_LE(got, previous) << "Lambda rises at t = " << t;  // decreasing in t, as G1 and G2 rely on
+    previous = got;
+  }
+  std::printf("float Lambda(t): worst error / bound %.3g at t = %.6g\n", worst, worst_t);
+  EXPECT_LE(worst, 1.0);
+}
+
+// Its ends: finite and non-negative on the whole float line, saturated toward t = 0, 0 where phi(t) underflows.
+TEST(GaussianMasking, FloatLambdaOfTIsFiniteEverywhere) {
+  const float saturated = std::exp(f32::GM_LOG_LAMBDA_MAX);
+  for (float t : {0.0f, -1.0f, std::numeric_limits<float>::denorm_min(), 1e-38f, 1e-31f})
+    EXPECT_EQ(f32::gaussian_smith_lambda_of_t(t), saturated) << t;
+  for (float t : {14.0f, 1e3f, 1e20f, std::numeric_limits<float>::max(), std::numeric_limits<float>::infinity()})
+    EXPECT_EQ(f32::gaussian_smith_lambda_of_t(t), 0.0f) << t;
+  for (float t = 1e-29f; t < 14.0f; t *= 1.01f) {
+    const float l = f32::gaussian_smith_lambda_of_t(t);
+    EXPECT_TRUE(std::isfinite(l) && l >= 0.0f) << t;
+  }
+}
