@@ -155,7 +155,7 @@ ivec2 heightfield_start_node(HeightField f, HeightFieldRay r, float t, ivec2 til
 // The ray's first hit t with the field in (r.t_lo, r.t_hi), or -1. Stackless: the ray sits in one
 // node at parameter t. A node whose height bounds the ray misses between t and its exit is left for
 // its neighbour across the exit face, entered at its coarsest ancestor the ray has not been in (across
-// a tile face, the next tile's node at heightfield_start_level); one it meets is descended into at the
+// a tile face, the next tile's root); one it meets is descended into at the
 // child holding the ray where it first reaches the bounds. Nodes come in order along the ray, so the
 // first hit of a cell is the nearest (shadow rays need no other), and no node is entered twice.
 float heightfield_search(HeightField f, HeightFieldRay r) {
@@ -213,8 +213,10 @@ float heightfield_search(HeightField f, HeightFieldRay r) {
     if (out_of_tile != ivec2(0)) {
       tile += out_of_tile;
       if (any(lessThan(tile, ivec2(0))) || any(greaterThanEqual(tile, f.tiles))) break;
-      level = heightfield_start_level(f, r, t, t_end, false);
-      node = heightfield_start_node(f, r, t, tile, level);
+      // The next tile's root: it holds the ray at t, and needs none of heightfield_start_node's
+      // arithmetic, which every step of every lane would run (lavapipe runs both sides of a branch).
+      level = f.top;
+      node = ivec2(0);
     } else {
       int k = findMSB((node.x ^ next.x) | (node.y ^ next.y));  // the levels whose ancestors differ
       if (k < 0) break;  // no face crossed: t stuck (a NaN from a direction too small to invert)
