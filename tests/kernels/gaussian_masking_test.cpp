@@ -146,8 +146,6 @@ TEST(GaussianMasking, VisibleHeightSampleInvertsTheCdf) {
               1e-9);
 }
 
-}  // namespace
-
 // The float Lambda(t) (one Chebyshev series, no loop: docs/masking.md, "Lambda in float") against the closed
 // form in long double at the same float t (a = t/sqrt2), relative. Its own error: the fit (1.3e-8), the series'
 // rounding (sum |c_k| eps_f < 6e-7 of k(t) (9 + t^2) >= 1) and exp's argument t^2/2 rounded (eps_f t^2/2).
@@ -184,3 +182,5 @@ TEST(GaussianMasking, FloatLambdaOfTIsFiniteEverywhere) {
     EXPECT_TRUE(std::isfinite(l) && l >= 0.0f) << t;
   }
 }
+
+}  // namespace
