@@ -26,11 +26,10 @@ namespace {
 // A tile's workgroups, numbered by 32-bit products in the shader's tile_position, stay within its bound.
 static_assert((kMaxTileSize / FACET_RENDER_WORKGROUP) * (kMaxTileSize / FACET_RENDER_WORKGROUP) <= kMaxTileBlocks);
 
-// The program of the pass: the smallest variant that covers the scene, the method and, under `orders`,
-// whether some grating falls back to the spectral path (gpu/direct_pass_variant.hpp). Counting work, the
-// program with its counters' increments (gpu/work_counter.hpp).
-std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod& method, bool orders_fall_back) {
-  const std::span<const uint32_t> program = direct_pass_variant(scene, method, orders_fall_back).spirv;
+// The program of the pass: the smallest variant that compiles in `code` (the plan's: gpu/direct_pass_variant.hpp).
+// Counting work, the program with its counters' increments (gpu/work_counter.hpp).
+std::vector<uint32_t> direct_pass_program(const Scene& scene, const RenderMethod& method, uint32_t code) {
+  const std::span<const uint32_t> program = direct_pass_variant(code, traces_height_fields(scene, method)).spirv;
   return method.counts_work ? instrument_work_counts(program) : std::vector<uint32_t>(program.begin(), program.end());
 }
 
@@ -144,11 +143,10 @@ bool mip_texels_are_whole(const Scene& scene) {
   return true;
 }
 
-// The specialization constants of the pass by their names in the shaders: what the scene uses, how
-// the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
+// The specialization constants of the pass by their names in the shaders: what the scene uses (`code`, the
+// plan's), how the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
-                                             const DiffractionPlan& diffraction) {
-  const uint32_t code = direct_pass_code(scene, method, orders_fall_back(diffraction));
+                                             const DiffractionPlan& diffraction, uint32_t code) {
   const auto has = [code](uint32_t part) { return (code & part) != 0 ? 1u : 0u; };
   const auto constants = std::to_array<vk::SpecConstant>({
       {FACET_RENDER_SPEC_HAS_MICROFLAKE, has(FACET_CODE_MICROFLAKE)},
@@ -251,6 +249,7 @@ DirectPass::Plan DirectPass::make_plan(vk::Context& context, const Scene& scene,
                     plan.field_shadow_rays, plan.field_shadow_nodes, method.name(), scene.camera_path.has_value());
   }
   plan.diffraction = plan_diffraction(context, scene, method.pass_diffraction());
+  plan.code = direct_pass_code(scene, method, orders_fall_back(plan.diffraction));
   return plan;
 }
 
@@ -279,9 +278,9 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       // anything of the textures. The thread ends before the constructor does (kernel_ waits for it; so
       // does the future if the reading or the upload throws).
       compiling_(std::async(std::launch::async,
-                            [&context, &scene, &method, spec = specialization(scene, method, plan.diffraction),
-                             fall_back = orders_fall_back(plan.diffraction)] {
-                              const std::vector<uint32_t> program = direct_pass_program(scene, method, fall_back);
+                            [&context, &scene, &method,
+                             spec = specialization(scene, method, plan.diffraction, plan.code), code = plan.code] {
+                              const std::vector<uint32_t> program = direct_pass_program(scene, method, code);
                               return std::make_unique<vk::Kernel>(
                                   context, vk::KernelDesc{.name = "render_direct",
                                                           .spirv = program,

@@ -60,12 +60,15 @@ class DirectPass {
  private:
   // What the pass settles before it uploads or compiles anything: a sample's shadow rays through height fields
   // (0: none traced) and the nodes each may visit, checked against the tracer's loop bound
-  // (gpu/heightfield_trace_bound.hpp), and the diffraction's plan (its specialization known before the tables are
-  // read).
+  // (gpu/heightfield_trace_bound.hpp), the diffraction's plan (its specialization known before the tables are
+  // read), and the code the program compiles in (gpu/direct_pass_variant.hpp: the scene's families, the method's
+  // and, under `orders`, whether the plan falls back to the spectral path), which chooses the variant and its
+  // specialization alike.
   struct Plan {
     int field_shadow_rays = 0;
     std::int64_t field_shadow_nodes = 0;
     DiffractionPlan diffraction;
+    uint32_t code = 0;
   };
   static Plan make_plan(vk::Context& context, const Scene& scene, const RenderMethod& method);
   // The constructor's work, once planned.
