@@ -178,6 +178,32 @@ const uint kColormapWalkedPoints = FACET_RENDER_WALKED_COLORMAP_POINTS;
 // point looks that point up again, whose colour change is 0, so it adds exactly nothing.
 uint colormap_walk_trips(uint unrolled, uint points) { return unrolled > 0u ? unrolled : points; }
 
+// A colour map as `filtered`'s taps read it: its record, and the points of the unrolled walks read once per
+// pixel. Read per tap inside the taps' loop, each point was a gather lane by lane that LLVM did not hoist:
+// a third of colormap_anisotropic's `filtered` frame (docs/render_speed.md, "The colour map's points once per
+// pixel"). points[j] is point min(first + j, last), the walks' j-th; only the unrolled walks read them.
+struct WalkedColormap {
+  GpuColormap record;
+  vec4 points[FACET_RENDER_WALKED_COLORMAP_POINTS];
+};
+
+const uint kWalkedColormapPoints =
+    kStepColormapPoints > kLinearColormapPoints ? kStepColormapPoints : kLinearColormapPoints;
+
+WalkedColormap walked_colormap(GpuColormap map) {
+  WalkedColormap c;
+  c.record = map;
+  uint first = map.info.x, last = map.info.x + map.info.y - 1u;
+  [[unroll]] for (uint j = 0u; j < kWalkedColormapPoints; ++j) c.points[j] = colormap_point(min(first + j, last));
+  return c;
+}
+
+// The j-th point of a walk of `unrolled` trips (kStepColormapPoints or kLinearColormapPoints; 0: a loop over
+// `index`, the same point, from the buffer).
+vec4 colormap_walk_point(WalkedColormap c, uint unrolled, uint j, uint index) {
+  return unrolled > 0u ? c.points[j] : colormap_point(index);
+}
+
 // The points [begin, end] a linear map's sums visit: those within kColormapReach s of m and the one beyond
 // on each side (binary searches; beyond them a Gaussian's weights are 0 or 1 to float precision), or the
 // whole map where it has at most kColormapWalkedPoints points. A step map (`steps`) searches nothing.
@@ -188,6 +214,7 @@ struct ColormapWindow {
 
 ColormapWindow colormap_linear_window(GpuColormap map, float m, float s, bool steps) {
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
+  if (kLinearColormapPoints > 0u) return ColormapWindow(first, last);  // every linear map is walked whole
   float reach = kColormapReach * s;
   bool searches = !steps && map.info.y > kColormapWalkedPoints;
   uint begin = colormap_first_point_above(first, searches ? last : first, m - reach);
@@ -208,9 +235,9 @@ ColormapWindow colormap_linear_window(GpuColormap map, float m, float s, bool st
 // beyond on each side are visited (binary searches): below them w = 1 and above them w = 0 to float
 // precision, which is why the sum starts at c_begin (maps of up to kColormapWalkedPoints are not searched).
 // For a step map (`steps`) the searches and the loop run no step, so no knot costs anything.
-vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
+vec3 colormap_linear_filtered(WalkedColormap c, float m, float s, bool steps) {
   s = s < kColormapLinearSigmaMax ? s : kColormapLinearSigmaMax;
-  ColormapWindow window = colormap_linear_window(map, m, s, steps);
+  ColormapWindow window = colormap_linear_window(c.record, m, s, steps);
   uint begin = window.begin, end = window.end;
   // The first point's colour enters as a jump from black of weight 1 inside the loop: a knot before the
   // loop would run for every lane, step maps' too (in a scene with both kinds, 8 of colormap_objects'
@@ -221,7 +248,7 @@ vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
   vec3 sum = vec3(0.0);
   uint trips = colormap_walk_trips(kLinearColormapPoints, steps ? 0u : end + 1u - begin);
   [[unroll]] for (uint j = 0u; j < trips; ++j) {
-    vec4 b = colormap_point(min(begin + j, end));
+    vec4 b = colormap_walk_point(c, kLinearColormapPoints, j, min(begin + j, end));
     float zb = colormap_standardize(b.w, m, s);
     ColormapSlopeKnot knot_b = colormap_slope_knot(zb);
     float dz = max(zb - za, 1e-30);  // no 0/0: the clamp below decides a jump's weight
@@ -242,13 +269,13 @@ vec3 colormap_linear_filtered(GpuColormap map, float m, float s, bool steps) {
 // whose loops and gathers cost twice the sum itself in lavapipe, and no subgroup vote or reduction, which
 // lavapipe 22.3 runs lane by lane (a walk of the subgroup's union of points, stopped by subgroupAll, took
 // 1.4x this one's device time on colormap_noise_plane; docs/render_speed.md).
-vec3 colormap_steps_filtered(GpuColormap map, float m, float s, bool steps) {
-  uint first = map.info.x, last = steps ? map.info.x + map.info.y - 1u : first;
-  vec3 before = colormap_point(first).rgb;
+vec3 colormap_steps_filtered(WalkedColormap c, float m, float s, bool steps) {
+  uint first = c.record.info.x, last = steps ? c.record.info.x + c.record.info.y - 1u : first;
+  vec3 before = colormap_walk_point(c, kStepColormapPoints, 0u, first).rgb;
   vec3 mean = before;
   uint trips = colormap_walk_trips(kStepColormapPoints, last - first + 1u);
   [[unroll]] for (uint j = 1u; j < trips; ++j) {
-    vec4 p = colormap_point(min(first + j, last));
+    vec4 p = colormap_walk_point(c, kStepColormapPoints, j, min(first + j, last));
     float z = colormap_standardize(p.w, m, s);
     bool beyond = z > kColormapReach;  // so are the later points: the loop stops, unrolled trips add 0
     if (kStepColormapPoints == 0u && beyond) break;
@@ -262,13 +289,14 @@ vec3 colormap_steps_filtered(GpuColormap map, float m, float s, bool steps) {
 // has its own loops, which run no iteration for the other kind (lavapipe runs both sides of a branch);
 // a scene with one kind only compiles that kind's code (kHasLinearColormaps, kHasStepColormaps): with
 // the linear code present though idle, the noise plane's step map took 1.2-1.3x the device time.
-vec3 colormap_filtered(GpuColormap map, float mu, float sigma) {
+vec3 colormap_filtered(WalkedColormap c, float mu, float sigma) {
+  GpuColormap map = c.record;
   float m = colormap_position(map, mu), s = sigma * abs(1.0 / (map.domain.y - map.domain.x));
-  if (!kHasLinearColormaps) return colormap_steps_filtered(map, m, s, true);
-  if (!kHasStepColormaps) return colormap_linear_filtered(map, m, s, false);
+  if (!kHasLinearColormaps) return colormap_steps_filtered(c, m, s, true);
+  if (!kHasStepColormaps) return colormap_linear_filtered(c, m, s, false);
   bool steps = map.info.z == 1u;
-  vec3 step_mean = colormap_steps_filtered(map, m, s, steps);
-  vec3 linear_mean = colormap_linear_filtered(map, m, s, steps);
+  vec3 step_mean = colormap_steps_filtered(c, m, s, steps);
+  vec3 linear_mean = colormap_linear_filtered(c, m, s, steps);
   return steps ? step_mean : linear_mean;
 }
 
@@ -286,10 +314,10 @@ vec3 colormap_table_lookup(GpuColormap map, float mu, float sigma) {
 // E[colormap(t)], t ~ N(mu, sigma^2): the table for `filtered:table` (above a step map's sigma floor,
 // below which bilinear interpolation cannot follow a jump), otherwise the exact segment integrals.
 // NaN goes to the table, which clamps it to the grid's low end.
-vec3 colormap_gaussian(GpuColormap map, float mu, float sigma) {
-  if (kTextureMethod == 4u && map.table.z > 0u && !(sigma < map.table_range.w))
-    return colormap_table_lookup(map, mu, sigma);
-  return colormap_filtered(map, mu, sigma);
+vec3 colormap_gaussian(WalkedColormap c, float mu, float sigma) {
+  if (kTextureMethod == 4u && c.record.table.z > 0u && !(sigma < c.record.table_range.w))
+    return colormap_table_lookup(c.record, mu, sigma);
+  return colormap_filtered(c, mu, sigma);
 }
 
 // The one or two moment levels of a footprint's taps (they share lod): `fine` at floor(lod), `coarse`
@@ -341,9 +369,9 @@ vec2 footprint_moments(MomentLevels levels, vec2 uv, vec2 axis_a, vec2 axis_b) {
 //   integral (p + q z)^2 phi(z) dz = p^2 dPhi + 2 p q (phi(a) - phi(b)) + q^2 (dPhi + a phi(a) - b phi(b)),
 // the end tails adding (c_begin - mean)^2 Phi(z_begin) and (c_end - mean)^2 Phi(-z_end). For a step map
 // (`steps`) the loop runs no step.
-vec3 colormap_linear_second_moment(GpuColormap map, float m, float s, vec3 mean, bool steps) {
-  ColormapWindow window = colormap_linear_window(map, m, s, steps);
-  vec4 a = colormap_point(window.begin);
+vec3 colormap_linear_second_moment(WalkedColormap c, float m, float s, vec3 mean, bool steps) {
+  ColormapWindow window = colormap_linear_window(c.record, m, s, steps);
+  vec4 a = colormap_walk_point(c, kLinearColormapPoints, 0u, window.begin);
   a.rgb -= mean;
   float za = colormap_standardize(a.w, m, s);
   ColormapKnot ka = colormap_knot_coarse(za);
@@ -351,7 +379,8 @@ vec3 colormap_linear_second_moment(GpuColormap map, float m, float s, vec3 mean,
   vec3 second = a.rgb * a.rgb * ka.Phi;
   uint trips = colormap_walk_trips(kLinearColormapPoints, steps ? 1u : window.end - window.begin + 1u);
   [[unroll]] for (uint j = 1u; j < trips; ++j) {
-    vec4 b = colormap_point(min(window.begin + j, window.end));  // a repeated point adds 0 (q = dPhi = 0)
+    // a repeated point adds 0 (q = dPhi = 0)
+    vec4 b = colormap_walk_point(c, kLinearColormapPoints, j, min(window.begin + j, window.end));
     b.rgb -= mean;
     float zb = colormap_standardize(b.w, m, s);
     ColormapKnot kb = colormap_knot_coarse(zb);
@@ -374,15 +403,16 @@ vec3 colormap_linear_second_moment(GpuColormap map, float m, float s, vec3 mean,
 // whose float difference (~6e-8) would outweigh the tails of a footprint a few sigma inside one step. Each
 // lane walks its own points upwards and stops after its first point beyond kColormapReach s above its
 // mean, whose P(t > x) and all later ones are 0 to float precision (none for a linear map, `steps` false).
-vec3 colormap_steps_second_moment(GpuColormap map, float m, float s, vec3 mean, bool steps) {
-  uint first = map.info.x, last = steps ? map.info.x + map.info.y - 1u : first;
-  vec3 step = colormap_point(first).rgb - mean;  // the current step's colour less the mean
+vec3 colormap_steps_second_moment(WalkedColormap c, float m, float s, vec3 mean, bool steps) {
+  uint first = c.record.info.x, last = steps ? c.record.info.x + c.record.info.y - 1u : first;
+  // the current step's colour less the mean
+  vec3 step = colormap_walk_point(c, kStepColormapPoints, 0u, first).rgb - mean;
   float below_step = 0.0, above_step = 1.0;      // P(t < x), P(t > x) at its lower end: the first reaches -inf
   vec3 second = vec3(0.0);
   bool beyond = false;  // a point beyond kColormapReach s was passed: the loop stops, unrolled trips add 0
   uint trips = colormap_walk_trips(kStepColormapPoints, last - first + 1u);
   [[unroll]] for (uint j = 1u; j < trips; ++j) {
-    vec4 p = colormap_point(min(first + j, last));
+    vec4 p = colormap_walk_point(c, kStepColormapPoints, j, min(first + j, last));
     float z = colormap_standardize(p.w, m, s);
     vec2 below_above = colormap_below_above(z);
     if (!beyond) {
@@ -397,17 +427,18 @@ vec3 colormap_steps_second_moment(GpuColormap map, float m, float s, vec3 mean, 
   return second + step * step * above_step;
 }
 
-vec3 colormap_spread(GpuColormap map, float mu, float sigma, vec3 mean) {
+vec3 colormap_spread(WalkedColormap c, float mu, float sigma, vec3 mean) {
+  GpuColormap map = c.record;
   float m = colormap_position(map, mu), s = max(sigma / abs(map.domain.y - map.domain.x), 1e-30);
   vec3 second;
   if (!kHasLinearColormaps) {
-    second = colormap_steps_second_moment(map, m, s, mean, true);
+    second = colormap_steps_second_moment(c, m, s, mean, true);
   } else if (!kHasStepColormaps) {
-    second = colormap_linear_second_moment(map, m, s, mean, false);
+    second = colormap_linear_second_moment(c, m, s, mean, false);
   } else {
     bool steps = map.info.z == 1u;
-    vec3 of_steps = colormap_steps_second_moment(map, m, s, mean, steps);
-    vec3 of_segments = colormap_linear_second_moment(map, m, s, mean, steps);
+    vec3 of_steps = colormap_steps_second_moment(c, m, s, mean, steps);
+    vec3 of_segments = colormap_linear_second_moment(c, m, s, mean, steps);
     second = steps ? of_steps : of_segments;
   }
   return sqrt(max(second, vec3(0.0)));
@@ -466,6 +497,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   // One loop over the taps (k along, j across within it; next_row_major), not a loop in a loop, which cost
   // the noise plane's `filtered` a quarter of its device time. The sums run in the nested loops' order.
   float count = along * split;
+  WalkedColormap walked = walked_colormap(map);
   ivec2 kj = ivec2(0);
   for (float i = 0.0; i < count; i += 1.0) {
     vec2 tap = uv + major * ((float(kj.x) + 0.5) / along - 0.5) + minor * ((float(kj.y) + 0.5) / split - 0.5);
@@ -477,9 +509,9 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
     } else {
       vec2 t = footprint_moments(levels, tap, tap_major, tap_minor);
       float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
-      vec3 mean = colormap_gaussian(map, t.x, sigma);
+      vec3 mean = colormap_gaussian(walked, t.x, sigma);
       colour += mean;
-      if (estimates) spread += colormap_spread(map, t.x, sigma, mean);
+      if (estimates) spread += colormap_spread(walked, t.x, sigma, mean);
 #endif
     }
     kj = next_row_major(kj, int(split));

@@ -30,7 +30,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= uint(probes.length())) return;
   vec4 q = probes[i];
-  GpuColormap map = colormap_record(uint(q.z));
+  WalkedColormap map = walked_colormap(colormap_record(uint(q.z)));
   vec3 mean = colormap_gaussian(map, q.x, q.y);
   probes[i] = vec4(q.w == 1.0 ? colormap_spread(map, q.x, q.y, mean) : mean, 0.0);
 }
