@@ -33,7 +33,7 @@ DiffractionResult evaluate_taylor(const SpectralTables& tables, const Diffractio
                                   glm::ivec2 bin_stride = glm::ivec2(1, 1));
 
 // Bin j's term of the window sum alone, with weight 1 (one order's BRDF before its window:
-// render/diffraction_taylor.glsl's diffraction_bin_value in double).
+// render/diffraction_taylor.glsl's diffraction_window_value with one_bin, in double).
 DiffractionResult evaluate_bin(const SpectralTables& tables, const DiffractionQuery& q, glm::ivec2 j);
 
 // w = -(cos theta_i + cos theta_r), kept 1e-9 away from 0 so that (P - H_0) / w of the exact

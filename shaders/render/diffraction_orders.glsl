@@ -60,11 +60,12 @@ vec3 diffraction_orders_xyz(DiffractionOrderLattice L, DiffractionTableInfo info
     if (!look.valid) continue;
     vec3 observer = mix(diffraction_observer_at(o.first + uint(look.index)).xyz,
                         diffraction_observer_at(o.first + uint(look.index) + 1u).xyz, look.f);
-    float weighed = over_pixel
-                        ? diffraction_bin_value(info, first_coefficient, wi, wr, lambda, j * L.repeats).brdf *
-                              diffraction_window_over_pixel(L, uv, steps, j, 2.0 * FACET_PI / lambda)
-                        : diffraction_taylor_value(info, first_coefficient, wi, wr, lambda, L.repeats).brdf *
-                              diffraction_order_share(L, uv, lambda, j);
+    // over the pixel, the order's own bin weighed by its window's mean; at the centre, the window sum by the share
+    float weight = over_pixel ? diffraction_window_over_pixel(L, uv, steps, j, 2.0 * FACET_PI / lambda)
+                              : diffraction_order_share(L, uv, lambda, j);
+    float weighed =
+        diffraction_window_value(info, first_coefficient, wi, wr, lambda, L.repeats, over_pixel, j * L.repeats).brdf *
+        weight;
     xyz += (weighed * I.step) * observer;
   }
   return xyz;

@@ -49,35 +49,33 @@ DiffractionTaylor diffraction_bin_taylor(DiffractionTableInfo info, uint first, 
   return diffraction_taylor_sum(t, g, info, first, j.x, j.y);
 }
 
+// The window sum over the bins near k(u, v) (C.1), or with `one_bin` bin j's term alone with weight 1: the
+// BRDF of one order whose window the caller weighs (the orders over a pixel, eq. O2 of
+// docs/diffraction_fast_paths.md; C++ twins evaluate_taylor and evaluate_bin). One function for both, so the
+// orders' loop, which takes either, inlines the Taylor sum once (lavapipe compiles each call site on its own).
 // wi, wr: unit vectors toward the light and the viewer in the grating's frame, z >= 0. bin_stride:
 // (1, 1) visits every bin of the window; a periodic patch's repeats visit only its lattice
 // (lib/diffraction_brdf.glsl, diffraction_window_bins).
-DiffractionValue diffraction_taylor_value(DiffractionTableInfo info, uint first, vec3 wi, vec3 wr, float lambda_nm,
-                                          ivec2 bin_stride) {
+DiffractionValue diffraction_window_value(DiffractionTableInfo info, uint first, vec3 wi, vec3 wr, float lambda_nm,
+                                          ivec2 bin_stride, bool one_bin, ivec2 j_one) {
   int J = info.shape.x;
   float T = info.scales.x, sigma = info.scales.y;
   DiffractionGeometry g = diffraction_geometry(wi, wr, lambda_nm, sigma, info.scales.z);
   DiffractionWindowBins bins = diffraction_window_bins(g.alpha, T, info.shape.z, bin_stride);
   DiffractionField field = DiffractionField(vec2(0.0), vec2(0.0));
-  for (int b = 0; b < bins.count.x * bins.count.y; ++b) {
-    ivec2 j = diffraction_window_bin(bins, b);
+  int count = one_bin ? 1 : bins.count.x * bins.count.y;
+  for (int b = 0; b < count; ++b) {
+    ivec2 j = one_bin ? j_one : diffraction_window_bin(bins, b);
     if (!diffraction_table_entry(0, j.x, j.y, J, 1).valid) continue;
-    float weight = diffraction_window_weight(g.alpha - diffraction_bin_frequency(j.x, j.y, T), sigma);
+    float weight = one_bin ? 1.0 : diffraction_window_weight(g.alpha - diffraction_bin_frequency(j.x, j.y, T), sigma);
     field = diffraction_field_add(field, weight, diffraction_bin_taylor(info, first, g, j));
   }
   return diffraction_value(g, field, sigma, info.scales.w);
 }
 
-// Bin j's term of the window sum alone, with weight 1: the BRDF of one order whose window the caller
-// weighs (the orders over a pixel, eq. O2 of docs/diffraction_fast_paths.md; C++ twin evaluate_bin).
-DiffractionValue diffraction_bin_value(DiffractionTableInfo info, uint first, vec3 wi, vec3 wr, float lambda_nm,
-                                       ivec2 j) {
-  float sigma = info.scales.y;
-  DiffractionGeometry g = diffraction_geometry(wi, wr, lambda_nm, sigma, info.scales.z);
-  DiffractionField field = DiffractionField(vec2(0.0), vec2(0.0));
-  if (diffraction_table_entry(0, j.x, j.y, info.shape.x, 1).valid)
-    field = diffraction_field_add(field, 1.0, diffraction_bin_taylor(info, first, g, j));
-  return diffraction_value(g, field, sigma, info.scales.w);
+DiffractionValue diffraction_taylor_value(DiffractionTableInfo info, uint first, vec3 wi, vec3 wr, float lambda_nm,
+                                          ivec2 bin_stride) {
+  return diffraction_window_value(info, first, wi, wr, lambda_nm, bin_stride, false, ivec2(0));
 }
 
 #endif
