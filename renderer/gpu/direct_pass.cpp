@@ -93,12 +93,16 @@ uint32_t unrolled_colormap_points(const Scene& scene, Colormap::Interpolation in
   return longest <= FACET_RENDER_WALKED_COLORMAP_POINTS ? static_cast<uint32_t>(longest) : 0u;
 }
 
-// The trips of colormap_at's bisection over the scene's longest colour map (textures' and microsurfaces'),
-// n >= 2 points: the interval j - i = n - 1 falls to at most ceil((j - i) / 2) a trip, so ceil(log2(n - 1)) =
-// bit_width(n - 2) trips end it. The shader unrolls the search to this count.
+// The trips of colormap_at's bisection over the scene's colour maps (textures' and microsurfaces'), n >= 2
+// points: the interval j - i = n - 1 falls to at most ceil((j - i) / 2) a trip, so ceil(log2(n - 1)) =
+// bit_width(n - 2) trips end it; an evenly spaced map's search starts from 3 segments (bit_width(2) = 2 trips,
+// render/texture_sampling.glsl). The shader unrolls the search to the most any map needs.
 uint32_t colormap_search_steps(const Scene& scene) {
-  std::size_t longest = 2;
-  const auto add = [&longest](const Colormap& map) { longest = std::max(longest, map.positions().size()); };
+  std::size_t longest = 2;  // the points of the longest search: 4 for an evenly spaced map (3 segments)
+  const auto add = [&longest](const Colormap& map) {
+    longest = std::max(longest, map.evenly_spaced() ? std::min<std::size_t>(map.positions().size(), 4)
+                                                     : map.positions().size());
+  };
   for (const Material& m : scene.materials) {
     if (const auto* t = std::get_if<ColormapTextureMaterial>(&m)) add(t->colormap);
     if (const auto* s = std::get_if<MicrosurfaceMaterial>(&m)) {

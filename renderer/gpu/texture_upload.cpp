@@ -60,7 +60,8 @@ precompute::PrefilteredColormap build_colormap_table(const ColormapTextureMateri
 
 GpuColormap append_colormap_points(TextureData& data, const Colormap& map) {
   const GpuColormap record{uvec4(data.colormap_points.size(), map.positions().size(),
-                                 map.interpolation() == Colormap::Interpolation::Steps ? 1 : 0, 0),
+                                 map.interpolation() == Colormap::Interpolation::Steps ? 1 : 0,
+                                 map.evenly_spaced() ? 1 : 0),
                            vec4(static_cast<float>(map.domain().x), static_cast<float>(map.domain().y), 0, 0), uvec4(0),
                            vec4(0)};
   for (size_t i = 0; i < map.positions().size(); ++i)

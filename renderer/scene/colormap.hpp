@@ -30,6 +30,8 @@ class Colormap {
   const std::vector<glm::dvec3>& colours() const { return colours_; }
   Interpolation interpolation() const { return interpolation_; }
   glm::dvec2 domain() const { return domain_; }
+  // Positions p0 + i·step to 1e-9 of the step (the built-in maps): a segment is found by a division.
+  bool evenly_spaced() const { return evenly_spaced_; }
   // The largest colour component, e.g. to check that a map is a valid albedo (<= 1).
   double max_component() const;
 

@@ -86,11 +86,19 @@ vec3 colormap_at(GpuColormap map, float value) {
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
   if (!(t > colormap_point(first).w)) return colormap_point(first).rgb;  // NaN takes the first colour
   if (t >= colormap_point(last).w) return colormap_point(last).rgb;
-  // Bisection for the segment with points[i].w <= t < points[i + 1].w: log2(count) reads (the
-  // microsurface pass looks up 256-point maps at 16-32 nodes per pixel), in kColormapSearchSteps
-  // unrolled trips, enough for the scene's longest map; a shorter map's search is done sooner and its
-  // last trips change nothing.
+  // Bisection for the segment with points[i].w <= t < points[i + 1].w: log2(count) reads, in
+  // kColormapSearchSteps unrolled trips, enough for the scene's longest search; a shorter one is done sooner
+  // and its last trips change nothing. An evenly spaced map (info.w: the built-in ones, 256 points, which the
+  // microsurface pass looks up at 16-32 nodes per pixel) has its segment at the division's floor k, or one
+  // off by rounding, so its search starts from points k - 1 and k + 2 (as Colormap::segment on the CPU).
   uint i = first, j = last;
+  if (map.info.w == 1u) {
+    int n = int(map.info.y);
+    float p_first = colormap_point(first).w, p_last = colormap_point(last).w;
+    int k = clamp(int((t - p_first) / (p_last - p_first) * float(n - 1)), 0, n - 2);  // t in (p_first, p_last)
+    i = first + uint(max(k - 1, 0));
+    j = first + uint(min(k + 2, n - 1));
+  }
   [[unroll]] for (uint trip = 0u; trip < kColormapSearchSteps; ++trip) {
     uint mid = (i + j) / 2u;
     bool below = colormap_point(mid).w <= t;

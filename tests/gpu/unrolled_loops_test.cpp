@@ -106,6 +106,35 @@ TEST(UnrolledLoops, ColourMapSearchesDoNotDependOnTheScenesLongestMap) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
+// The noise plane under a built-in 256-point map (evenly spaced: colormap_at's search starts from the division's
+// three segments, in 2 trips) and under the same map with one position moved by 1e-8 of a step (no longer evenly
+// spaced in double, the same positions in float: the whole map's bisection, 8 trips): `naive` (every pixel looked
+// up) and `mip` (every tap) find the same segments, linear and in steps.
+TEST(UnrolledLoops, EvenlySpacedMapsAreSearchedFromTheDivisionsSegment) {
+  auto context = test::make_validated_context();
+  const Scene plain = load_scene(kScenes / "colormap_noise_plane.json");
+  for (const auto interpolation : {Colormap::Interpolation::Linear, Colormap::Interpolation::Steps}) {
+    const Colormap viridis = builtin_colormap("viridis", interpolation, {0.1, 0.9});
+    std::vector<double> moved = viridis.positions();
+    moved[100] += 1e-8 / 255.0;
+    const Colormap uneven(moved, viridis.colours(), interpolation, viridis.domain());
+    ASSERT_TRUE(viridis.evenly_spaced());
+    ASSERT_FALSE(uneven.evenly_spaced());
+    ASSERT_EQ(static_cast<float>(moved[100]), static_cast<float>(viridis.positions()[100]));
+    Scene even_scene = plain, uneven_scene = plain;
+    for (Scene* scene : {&even_scene, &uneven_scene})
+      for (Material& m : scene->materials)
+        if (auto* t = std::get_if<ColormapTextureMaterial>(&m)) t->colormap = scene == &even_scene ? viridis : uneven;
+    for (const char* name : {"naive", "mip"}) {
+      const RenderMethod method = RenderMethod::parse(name);
+      const Image searched = gpu::render_direct(*context, uneven_scene, 48, 27, method);
+      const Image divided = gpu::render_direct(*context, even_scene, 48, 27, method);
+      EXPECT_EQ(differing_samples(searched, divided), 0) << name;
+    }
+  }
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
 // Two spheres on a plane (unrolled loops of 1 and 2 trips) against the same scene with far objects
 // that neither show nor shadow anything (planes and spheres past four: loops over the scene's counts).
 TEST(UnrolledLoops, PlaneAndSphereLoopsUnrolledOrNotHitTheSame) {
