@@ -53,6 +53,18 @@ int differing_samples(const Image& a, const Image& b) {
   return differing;
 }
 
+// Scenes a and b rendered by each of `methods` at 48x27: the same bits.
+void expect_same_frames(vk::Context& context, const Scene& a, const Scene& b,
+                        std::initializer_list<const char*> methods) {
+  for (const char* name : methods) {
+    const RenderMethod method = RenderMethod::parse(name);
+    EXPECT_EQ(differing_samples(gpu::render_direct(context, a, 48, 27, method),
+                                gpu::render_direct(context, b, 48, 27, method)),
+              0)
+        << name;
+  }
+}
+
 RenderMethod filtered_with_error() {
   RenderMethod method = RenderMethod::parse("filtered");
   method.aovs.error = true;  // the spread walks the maps' points too (texture_sampling.glsl)
@@ -125,12 +137,7 @@ TEST(UnrolledLoops, EvenlySpacedMapsAreSearchedFromTheDivisionsSegment) {
     for (Scene* scene : {&even_scene, &uneven_scene})
       for (Material& m : scene->materials)
         if (auto* t = std::get_if<ColormapTextureMaterial>(&m)) t->colormap = scene == &even_scene ? viridis : uneven;
-    for (const char* name : {"naive", "mip"}) {
-      const RenderMethod method = RenderMethod::parse(name);
-      const Image searched = gpu::render_direct(*context, uneven_scene, 48, 27, method);
-      const Image divided = gpu::render_direct(*context, even_scene, 48, 27, method);
-      EXPECT_EQ(differing_samples(searched, divided), 0) << name;
-    }
+    expect_same_frames(*context, uneven_scene, even_scene, {"naive", "mip"});
   }
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
@@ -147,12 +154,7 @@ TEST(UnrolledLoops, PlaneAndSphereLoopsUnrolledOrNotHitTheSame) {
         {{0.0, -50.0 - i, 0.0}, {0.0, -1.0, 0.0}, 0, glm::dvec3(1.0, 0.0, 0.0), glm::dvec2(1.0), glm::dvec2(1.0)});
     crowded.spheres.push_back({{0.0, -60.0 - 3.0 * i, 40.0}, 0.5, 1});
   }
-  for (const char* name : {"naive", "ss:2"}) {
-    const RenderMethod method = RenderMethod::parse(name);
-    const Image reference = gpu::render_direct(*context, plain, 48, 27, method);
-    const Image looped = gpu::render_direct(*context, crowded, 48, 27, method);
-    EXPECT_EQ(differing_samples(reference, looped), 0) << name;
-  }
+  expect_same_frames(*context, plain, crowded, {"naive", "ss:2"});
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
