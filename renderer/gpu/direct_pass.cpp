@@ -16,6 +16,7 @@
 #include "gpu/heightfield_trace_bound.hpp"
 #include "gpu/pixel_coverage.hpp"
 #include "gpu/render_layout.hpp"
+#include "gpu/texture_upload.hpp"
 #include "gpu/work_counter.hpp"
 #include "gpu/workgroup_order.hpp"
 #include "image/edge_error.hpp"
@@ -93,24 +94,36 @@ uint32_t unrolled_colormap_points(const Scene& scene, Colormap::Interpolation in
   return longest <= FACET_RENDER_WALKED_COLORMAP_POINTS ? static_cast<uint32_t>(longest) : 0u;
 }
 
-// The trips of colormap_at's bisection over the scene's colour maps (textures' and microsurfaces'), n >= 2
-// points: the interval j - i = n - 1 falls to at most ceil((j - i) / 2) a trip, so ceil(log2(n - 1)) =
-// bit_width(n - 2) trips end it; an evenly spaced map's search starts from 3 segments (bit_width(2) = 2 trips,
-// render/texture_sampling.glsl). The shader unrolls the search to the most any map needs.
-uint32_t colormap_search_steps(const Scene& scene) {
-  std::size_t longest = 2;  // the points of the longest search: 4 for an evenly spaced map (3 segments)
-  const auto add = [&longest](const Colormap& map) {
-    longest = std::max(longest, map.evenly_spaced() ? std::min<std::size_t>(map.positions().size(), 4)
-                                                     : map.positions().size());
-  };
+// Every colour map colormap_at may look up: the textures' and the microsurfaces'.
+template <typename Visit>
+void for_each_colormap(const Scene& scene, Visit visit) {
   for (const Material& m : scene.materials) {
-    if (const auto* t = std::get_if<ColormapTextureMaterial>(&m)) add(t->colormap);
+    if (const auto* t = std::get_if<ColormapTextureMaterial>(&m)) visit(t->colormap);
     if (const auto* s = std::get_if<MicrosurfaceMaterial>(&m)) {
-      if (s->height_colormap) add(*s->height_colormap);
-      if (s->slope_colormap) add(*s->slope_colormap);
+      if (s->height_colormap) visit(*s->height_colormap);
+      if (s->slope_colormap) visit(*s->slope_colormap);
     }
   }
+}
+
+// The trips of colormap_at's bisection over the scene's colour maps, n >= 2 points: the interval j - i = n - 1
+// falls to at most ceil((j - i) / 2) a trip, so ceil(log2(n - 1)) = bit_width(n - 2) trips end it; a map searched
+// from a division starts from 3 segments (bit_width(2) = 2 trips, render/texture_sampling.glsl). The shader
+// unrolls the search to the most any map needs.
+uint32_t colormap_search_steps(const Scene& scene) {
+  std::size_t longest = 2;  // the points of the longest search: 4 for a map searched from a division
+  for_each_colormap(scene, [&longest](const Colormap& map) {
+    longest = std::max<std::size_t>(longest, colormap_searched_by_division(map) ? 4 : map.positions().size());
+  });
   return static_cast<uint32_t>(std::bit_width(longest - 2));
+}
+
+// Whether some colour map of the scene is searched from a division (kColormapDivides: else its code is left out).
+uint32_t colormaps_divide(const Scene& scene) {
+  bool divides = false;
+  for_each_colormap(scene,
+                    [&divides](const Colormap& map) { divides = divides || colormap_searched_by_division(map); });
+  return divides ? 1u : 0u;
 }
 
 // The trips of the shader's loops over the scene's planes or spheres (render/trace.glsl): their count where
@@ -180,6 +193,7 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_STEP_COLORMAP_POINTS, unrolled_colormap_points(scene, Colormap::Interpolation::Steps)},
       {FACET_RENDER_SPEC_LINEAR_COLORMAP_POINTS, unrolled_colormap_points(scene, Colormap::Interpolation::Linear)},
       {FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS, colormap_search_steps(scene)},
+      {FACET_RENDER_SPEC_COLORMAP_DIVIDES, colormaps_divide(scene)},
       {FACET_RENDER_SPEC_PLANE_TRIPS, primitive_trips(scene, method, scene.planes.size())},
       {FACET_RENDER_SPEC_SPHERE_TRIPS, primitive_trips(scene, method, scene.spheres.size())},
   });

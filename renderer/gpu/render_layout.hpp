@@ -45,6 +45,7 @@ static_assert(contiguous_ids(std::array<int, FACET_RENDER_SPEC_COUNT>{FACET_REND
                                                                       FACET_RENDER_SPEC_STEP_COLORMAP_POINTS,
                                                                       FACET_RENDER_SPEC_LINEAR_COLORMAP_POINTS,
                                                                       FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS,
+                                                                      FACET_RENDER_SPEC_COLORMAP_DIVIDES,
                                                                       FACET_RENDER_SPEC_PLANE_TRIPS,
                                                                       FACET_RENDER_SPEC_SPHERE_TRIPS}));
 

@@ -58,12 +58,13 @@ precompute::PrefilteredColormap build_colormap_table(const ColormapTextureMateri
   return precompute::build_prefiltered_colormap(map, options);
 }
 
+bool colormap_searched_by_division(const Colormap& map) { return map.evenly_spaced() && map.positions().size() > 4; }
+
 GpuColormap append_colormap_points(TextureData& data, const Colormap& map) {
-  const GpuColormap record{uvec4(data.colormap_points.size(), map.positions().size(),
-                                 map.interpolation() == Colormap::Interpolation::Steps ? 1 : 0,
-                                 map.evenly_spaced() ? 1 : 0),
-                           vec4(static_cast<float>(map.domain().x), static_cast<float>(map.domain().y), 0, 0), uvec4(0),
-                           vec4(0)};
+  const GpuColormap record{
+      uvec4(data.colormap_points.size(), map.positions().size(),
+            map.interpolation() == Colormap::Interpolation::Steps ? 1 : 0, colormap_searched_by_division(map) ? 1 : 0),
+      vec4(static_cast<float>(map.domain().x), static_cast<float>(map.domain().y), 0, 0), uvec4(0), vec4(0)};
   for (size_t i = 0; i < map.positions().size(); ++i)
     data.colormap_points.push_back(vec4(glm::vec3(map.colours()[i]), static_cast<float>(map.positions()[i])));
   return record;

@@ -60,6 +60,10 @@ double colormap_table_sigma_floor(const Colormap& map);
 // colormap_table_sigma_floor.
 precompute::PrefilteredColormap build_colormap_table(const ColormapTextureMaterial& material);
 
+// Whether the GPU finds a segment of `map` from a division (evenly spaced, and more than 4 points, below which the
+// bisection alone takes at most 2 trips): GpuColormap.info.w, kColormapDivides (render/texture_sampling.glsl).
+bool colormap_searched_by_division(const Colormap& map);
+
 // Appends the control points of `map` to data.colormap_points; returns its record (no table), for
 // the caller to complete and push to data.colormaps.
 GpuColormap append_colormap_points(TextureData& data, const Colormap& map);

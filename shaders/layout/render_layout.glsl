@@ -64,7 +64,8 @@
 #define FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS 21
 #define FACET_RENDER_SPEC_PLANE_TRIPS 22
 #define FACET_RENDER_SPEC_SPHERE_TRIPS 23
-#define FACET_RENDER_SPEC_COUNT 24
+#define FACET_RENDER_SPEC_COLORMAP_DIVIDES 24
+#define FACET_RENDER_SPEC_COUNT 25
 // The value of FACET_RENDER_SPEC_PLANE_TRIPS and _SPHERE_TRIPS for a loop over the scene's count (render/trace.glsl).
 #define FACET_RENDER_LOOPED_TRIPS 0xffffffffu
 // Colour maps of up to this many points are walked whole (not searched); where every map of a kind in a

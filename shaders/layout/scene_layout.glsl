@@ -84,7 +84,7 @@ struct GpuTextureLevel {
 // optionally its prefiltered table T(mu, sigma) (lib/colormap_table.glsl) as RGBA texels, entry k at
 // texels[table.x + k], for `filtered:table`.
 struct GpuColormap {
-  uvec4 info;         // first, count, steps (1) or linear (0), evenly spaced (1: Colormap::evenly_spaced)
+  uvec4 info;         // first, count, steps (1) or linear (0), segment by division (1: colormap_searched_by_division)
   vec4 domain;        // the texture value mapped to position 0 (x) and 1 (y)
   uvec4 table;        // first table texel, mu count I, sigma count J (0: no table), -
   vec4 table_range;   // mu_min, mu_max, sigma_max (texture values), sigma_floor: below it, the exact filter

@@ -65,6 +65,7 @@ layout(constant_id = FACET_RENDER_SPEC_WHOLE_MIP_TEXELS) const bool kWholeMipTex
 layout(constant_id = FACET_RENDER_SPEC_STEP_COLORMAP_POINTS) const uint kStepColormapPoints = 0u;      // the same
 layout(constant_id = FACET_RENDER_SPEC_LINEAR_COLORMAP_POINTS) const uint kLinearColormapPoints = 0u;  // the same
 layout(constant_id = FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS) const uint kColormapSearchSteps = 32u;   // the same
+layout(constant_id = FACET_RENDER_SPEC_COLORMAP_DIVIDES) const bool kColormapDivides = true;           // the same
 layout(constant_id = FACET_RENDER_SPEC_PLANE_TRIPS) const uint kPlaneTrips = FACET_RENDER_LOOPED_TRIPS;    // render/trace.glsl
 layout(constant_id = FACET_RENDER_SPEC_SPHERE_TRIPS) const uint kSphereTrips = FACET_RENDER_LOOPED_TRIPS;  // the same
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,

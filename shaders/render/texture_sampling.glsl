@@ -90,9 +90,10 @@ vec3 colormap_at(GpuColormap map, float value) {
   // kColormapSearchSteps unrolled trips, enough for the scene's longest search; a shorter one is done sooner
   // and its last trips change nothing. An evenly spaced map (info.w: the built-in ones, 256 points, which the
   // microsurface pass looks up at 16-32 nodes per pixel) has its segment at the division's floor k, or one
-  // off by rounding, so its search starts from points k - 1 and k + 2 (as Colormap::segment on the CPU).
+  // off by rounding, so its search starts from points k - 1 and k + 2 (as Colormap::segment on the CPU);
+  // kColormapDivides leaves this out of scenes without such a map (lavapipe would run it for every lookup).
   uint i = first, j = last;
-  if (map.info.w == 1u) {
+  if (kColormapDivides && map.info.w == 1u) {
     int n = int(map.info.y);
     float p_first = colormap_point(first).w, p_last = colormap_point(last).w;
     int k = clamp(int((t - p_first) / (p_last - p_first) * float(n - 1)), 0, n - 2);  // t in (p_first, p_last)

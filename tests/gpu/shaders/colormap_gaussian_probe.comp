@@ -20,6 +20,7 @@ const bool kWholeMipTexels = false;  // no texture is looked up here
 const uint kStepColormapPoints = 0u;
 const uint kLinearColormapPoints = 0u;
 const uint kColormapSearchSteps = 32u;  // colormap_at's search: enough for any map
+const bool kColormapDivides = true;     // and from a division where a map's record asks for it
 
 #include "render/scene_bindings.glsl"
 #include "render/texture_sampling.glsl"
