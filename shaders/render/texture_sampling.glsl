@@ -88,9 +88,9 @@ vec3 colormap_at(GpuColormap map, float value) {
   if (t >= colormap_point(last).w) return colormap_point(last).rgb;
   // Bisection for the segment with points[i].w <= t < points[i + 1].w: log2(count) reads, in
   // kColormapSearchSteps unrolled trips, enough for the scene's longest search; a shorter one is done sooner
-  // and its last trips change nothing. An evenly spaced map (info.w: the built-in ones, 256 points, which the
-  // microsurface pass looks up at 16-32 nodes per pixel) has its segment at the division's floor k, or one
-  // off by rounding, so its search starts from points k - 1 and k + 2 (as Colormap::segment on the CPU);
+  // and its last trips change nothing. An evenly spaced map of more than 4 points (info.w: the built-in ones,
+  // 256 points, which the microsurface pass looks up at 16-32 nodes per pixel) has its segment at the division's
+  // floor k, or one off by rounding, so its search starts from points k - 1 and k + 2 (as Colormap::segment);
   // kColormapDivides leaves this out of scenes without such a map (lavapipe would run it for every lookup).
   uint i = first, j = last;
   if (kColormapDivides && map.info.w == 1u) {
