@@ -84,8 +84,9 @@ float colormap_position(GpuColormap map, float value) {
 vec3 colormap_at(GpuColormap map, float value) {
   float t = colormap_position(map, value);
   uint first = map.info.x, last = map.info.x + map.info.y - 1u;
-  if (!(t > colormap_point(first).w)) return colormap_point(first).rgb;  // NaN takes the first colour
-  if (t >= colormap_point(last).w) return colormap_point(last).rgb;
+  vec4 lowest = colormap_point(first), highest = colormap_point(last);
+  if (!(t > lowest.w)) return lowest.rgb;  // NaN takes the first colour
+  if (t >= highest.w) return highest.rgb;
   // Bisection for the segment with points[i].w <= t < points[i + 1].w: log2(count) reads, in
   // kColormapSearchSteps unrolled trips, enough for the scene's longest search; a shorter one is done sooner
   // and its last trips change nothing. An evenly spaced map of more than 4 points (info.w: the built-in ones,
@@ -95,8 +96,7 @@ vec3 colormap_at(GpuColormap map, float value) {
   uint i = first, j = last;
   if (kColormapDivides && map.info.w == 1u) {
     int n = int(map.info.y);
-    float p_first = colormap_point(first).w, p_last = colormap_point(last).w;
-    int k = clamp(int((t - p_first) / (p_last - p_first) * float(n - 1)), 0, n - 2);  // t in (p_first, p_last)
+    int k = clamp(int((t - lowest.w) / (highest.w - lowest.w) * float(n - 1)), 0, n - 2);  // t inside the ends
     i = first + uint(max(k - 1, 0));
     j = first + uint(min(k + 2, n - 1));
   }
