@@ -100,11 +100,20 @@ TEST(DirectPassVariants, TheSmallestCoveringVariantIsChosenAndMixesGetTheFallbac
   // Mixed families: every family without the filtered methods and preintegrated tables, else everything.
   constexpr uint32_t kEveryFamily = FACET_CODE_ALL & ~(FACET_CODE_FILTERED | FACET_CODE_DIFFRACTION_PREINTEGRATED);
   EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION, false).code, kEveryFamily);
-  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES, true).code, kEveryFamily);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_DIFFRACTION, true).code, kEveryFamily);
   EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION | FACET_CODE_FILTERED, false).code,
             uint32_t{FACET_CODE_ALL});
-  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES | FACET_CODE_FILTERED, true).code,
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_MICROFLAKE | FACET_CODE_FILTERED, true).code,
             uint32_t{FACET_CODE_ALL});
+  // A traced field beside spheres, meshes and textured objects (a ball on rough ground) has programs of its own.
+  constexpr uint32_t kFieldAndObjects = FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES | FACET_CODE_TRIANGLES;
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES, true).code, kFieldAndObjects);
+  EXPECT_EQ(gpu::direct_pass_variant(kFieldAndObjects | FACET_CODE_FILTERED, true).code,
+            kFieldAndObjects | FACET_CODE_FILTERED);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_TEXTURE | FACET_CODE_FILTERED, true).code,
+            kFieldAndObjects | FACET_CODE_TEXTURE | FACET_CODE_FILTERED);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_TEXTURE | FACET_CODE_SPHERES, false).code,
+            kFieldAndObjects | FACET_CODE_TEXTURE);
   EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE, false).code, uint32_t{FACET_CODE_TEXTURE});
 }
 
@@ -128,6 +137,42 @@ TEST(DirectPassVariants, TheFallbackRendersTheSameBitsAsTheSmallVariant) {
   for (size_t i = 0; i < small.pixel_count(); ++i)
     if (small.at(i) != fallback.at(i)) ++differing;
   EXPECT_EQ(differing, 0);
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
+// A ball, plain or textured, on the traced terrain: the field-and-objects variants render it, filtered with the
+// error estimate and naive, to the same bits as the variant with everything (forced by an unused grating).
+TEST(DirectPassVariants, TracedFieldsBesideObjectsRenderTheSameBitsAsTheFallback) {
+  auto context = test::make_validated_context();
+  const auto file = kScenes / "microsurface_terrain.json";
+  const std::string objects = R"(objects=[
+      {"type": "plane", "point": [0, 0, -1], "normal": [0, 1, 0], "size": [4, 6], "material": "terrain"},
+      {"type": "sphere", "center": [0.2, 0.25, -0.6], "radius": 0.25, "material": "ball"}])";
+  const std::string unused = R"(materials.unused={"type": "diffraction", "grating": {"type": "sinusoid",
+      "period_nm": 1000, "amplitude_nm": 100, "size_um": 4, "samples": 16, "coherence_um": 2}})";
+  const std::string plain_ball = R"(materials.ball={"type": "lambert", "albedo": [0.7, 0.6, 0.5]})";
+  const std::string textured_ball = R"(materials.ball={"type": "colormap_texture", "texture": {"noise":
+      {"width": 64, "height": 64, "octaves": 3, "base_frequency": 4, "seed": 2}}, "colormap": {"builtin": "magma"}})";
+  for (const std::string& ball : {plain_ball, textured_ball})
+    for (const char* name : {"naive", "filtered"}) {
+      SCOPED_TRACE(ball.substr(0, 40) + " " + name);
+      RenderMethod method = RenderMethod::parse(name);
+      method.aovs.error = method.texture == RenderMethod::Texture::Filtered;
+      const Scene small = load_scene(file, {ball, objects});
+      const Scene mixed = load_scene(file, {ball, objects, unused});
+      const gpu::DirectPassVariant& variant = gpu::direct_pass_variant(small, method);
+      EXPECT_TRUE(variant.height_fields);
+      EXPECT_EQ(variant.code & FACET_CODE_DIFFRACTION, 0u) << variant.name;
+      ASSERT_EQ(gpu::direct_pass_variant(mixed, method).code & FACET_CODE_DIFFRACTION,
+                uint32_t{FACET_CODE_DIFFRACTION});
+      const Image alone = gpu::render_direct(*context, small, 40, 24, method);
+      const Image fallback = gpu::render_direct(*context, mixed, 40, 24, method);
+      ASSERT_EQ(alone.pixel_count(), fallback.pixel_count());
+      int differing = 0;
+      for (size_t i = 0; i < alone.pixel_count(); ++i)
+        if (alone.at(i) != fallback.at(i)) ++differing;
+      EXPECT_EQ(differing, 0);
+    }
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
