@@ -99,12 +99,15 @@ TEST(DirectPassVariants, TheSmallestCoveringVariantIsChosenAndMixesGetTheFallbac
     }
   // Mixed families: every family without the filtered methods and preintegrated tables, else everything.
   constexpr uint32_t kEveryFamily = FACET_CODE_ALL & ~(FACET_CODE_FILTERED | FACET_CODE_DIFFRACTION_PREINTEGRATED);
-  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION, false).code, kEveryFamily);
   EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_DIFFRACTION, true).code, kEveryFamily);
-  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION | FACET_CODE_FILTERED, false).code,
+  EXPECT_EQ(gpu::direct_pass_variant(
+                FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION | FACET_CODE_MICROFLAKE | FACET_CODE_FILTERED, false)
+                .code,
             uint32_t{FACET_CODE_ALL});
-  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_MICROFLAKE | FACET_CODE_FILTERED, true).code,
-            uint32_t{FACET_CODE_ALL});
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_MICROFLAKE | FACET_CODE_TEXTURE, true).code,
+            kEveryFamily);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION | FACET_CODE_MICROFLAKE, false).code,
+            kEveryFamily);
   // A traced field beside spheres, meshes and textured objects (a ball on rough ground) has programs of its own.
   constexpr uint32_t kFieldAndObjects = FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES | FACET_CODE_TRIANGLES;
   EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_SPHERES, true).code, kFieldAndObjects);
@@ -114,18 +117,28 @@ TEST(DirectPassVariants, TheSmallestCoveringVariantIsChosenAndMixesGetTheFallbac
             kFieldAndObjects | FACET_CODE_TEXTURE | FACET_CODE_FILTERED);
   EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_TEXTURE | FACET_CODE_SPHERES, false).code,
             kFieldAndObjects | FACET_CODE_TEXTURE);
+  // and a grating beside a textured floor, and microflakes beside a traced field.
+  constexpr uint32_t kGratingAndTexture = FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION |
+                                          FACET_CODE_DIFFRACTION_SPECTRAL | FACET_CODE_DIFFRACTION_ORDERS |
+                                          FACET_CODE_SPHERES | FACET_CODE_TRIANGLES;
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION, false).code, kGratingAndTexture);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE | FACET_CODE_DIFFRACTION | FACET_CODE_FILTERED, false).code,
+            kGratingAndTexture | FACET_CODE_FILTERED);
+  EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_MICROSURFACE | FACET_CODE_MICROFLAKE | FACET_CODE_FILTERED, true).code,
+            kFieldAndObjects | FACET_CODE_MICROFLAKE | FACET_CODE_FILTERED);
   EXPECT_EQ(gpu::direct_pass_variant(FACET_CODE_TEXTURE, false).code, uint32_t{FACET_CODE_TEXTURE});
 }
 
-// An unused diffraction material puts the noise plane outside every smaller variant: the fallback
-// renders it, filtered with the error estimate, to the same bits as the textures' own variant.
+// Unused diffraction and microflake materials put the noise plane outside every smaller variant: the
+// fallback renders it, filtered with the error estimate, to the same bits as the textures' own variant.
 TEST(DirectPassVariants, TheFallbackRendersTheSameBitsAsTheSmallVariant) {
   auto context = test::make_validated_context();
   const auto file = kScenes / "colormap_noise_plane.json";
   const Scene plain = load_scene(file);
   const Scene mixed =
       load_scene(file, {R"(materials.unused={"type": "diffraction", "grating": {"type": "sinusoid", "period_nm": 1000,
-             "amplitude_nm": 100, "size_um": 4, "samples": 16, "coherence_um": 2}})"});
+             "amplitude_nm": 100, "size_um": 4, "samples": 16, "coherence_um": 2}})",
+                        R"(materials.flakes={"type": "microflake", "ndf": "ggx", "param": 0.3, "albedo": [1, 1, 1]})"});
   RenderMethod method = RenderMethod::parse("filtered");
   method.aovs.error = true;
   ASSERT_EQ(gpu::direct_pass_variant(plain, method).code, uint32_t{FACET_CODE_TEXTURE | FACET_CODE_FILTERED});
@@ -140,37 +153,61 @@ TEST(DirectPassVariants, TheFallbackRendersTheSameBitsAsTheSmallVariant) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
-// A ball, plain or textured, on the traced terrain: the field-and-objects variants render it, filtered with the
-// error estimate and naive, to the same bits as the variant with everything (forced by an unused grating).
-TEST(DirectPassVariants, TracedFieldsBesideObjectsRenderTheSameBitsAsTheFallback) {
+// Mixes of two families that have variants of their own (a ball on rough ground, a grating beside a textured
+// floor): rendered, `naive` and `filtered` with the error estimate, to the same bits as by the fallback, which an
+// unused material of a third family forces.
+struct MixedScene {
+  const char* file;
+  std::vector<std::string> overrides;
+  std::string unused;  // a material of a family outside the mix
+};
+
+TEST(DirectPassVariants, MixesWithVariantsOfTheirOwnRenderTheSameBitsAsTheFallback) {
   auto context = test::make_validated_context();
-  const auto file = kScenes / "microsurface_terrain.json";
-  const std::string objects = R"(objects=[
+  const std::string ball_on_terrain = R"(objects=[
       {"type": "plane", "point": [0, 0, -1], "normal": [0, 1, 0], "size": [4, 6], "material": "terrain"},
       {"type": "sphere", "center": [0.2, 0.25, -0.6], "radius": 0.25, "material": "ball"}])";
-  const std::string unused = R"(materials.unused={"type": "diffraction", "grating": {"type": "sinusoid",
+  const std::string unused_grating = R"(materials.unused={"type": "diffraction", "grating": {"type": "sinusoid",
       "period_nm": 1000, "amplitude_nm": 100, "size_um": 4, "samples": 16, "coherence_um": 2}})";
-  const std::string plain_ball = R"(materials.ball={"type": "lambert", "albedo": [0.7, 0.6, 0.5]})";
-  const std::string textured_ball = R"(materials.ball={"type": "colormap_texture", "texture": {"noise":
-      {"width": 64, "height": 64, "octaves": 3, "base_frequency": 4, "seed": 2}}, "colormap": {"builtin": "magma"}})";
-  for (const std::string& ball : {plain_ball, textured_ball})
+  const std::vector<MixedScene> mixes = {
+      {"microsurface_terrain.json",
+       {R"(materials.ball={"type": "lambert", "albedo": [0.7, 0.6, 0.5]})", ball_on_terrain},
+       unused_grating},
+      {"microsurface_terrain.json",
+       {R"(materials.ball={"type": "colormap_texture", "texture": {"noise": {"width": 64, "height": 64, "octaves": 3,
+            "base_frequency": 4, "seed": 2}}, "colormap": {"builtin": "magma"}})",
+        ball_on_terrain},
+       unused_grating},
+      {"microsurface_terrain.json",
+       {R"(materials.ball={"type": "microflake", "ndf": "ggx", "param": 0.3, "albedo": [0.9, 0.7, 0.4]})",
+        ball_on_terrain},
+       unused_grating},
+      {"colormap_noise_plane.json",
+       {R"(materials.ball={"type": "diffraction", "grating": {"type": "sinusoid", "period_nm": 1000,
+            "amplitude_nm": 120, "size_um": 4, "samples": 16, "coherence_um": 2}, "method": "orders"})",
+        R"(objects=[{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "uv_scale": [2, 2], "material": "bands"},
+            {"type": "sphere", "center": [0.1, 0.3, -1.2], "radius": 0.3, "material": "ball"}])"},
+       R"(materials.unused={"type": "microflake", "ndf": "beckmann", "param": 0.2, "albedo": [0.5, 0.5, 0.5]})"},
+  };
+  for (const MixedScene& mix : mixes)
     for (const char* name : {"naive", "filtered"}) {
-      SCOPED_TRACE(ball.substr(0, 40) + " " + name);
+      SCOPED_TRACE(mix.overrides.front().substr(0, 60) + " " + name);
       RenderMethod method = RenderMethod::parse(name);
       method.aovs.error = method.texture == RenderMethod::Texture::Filtered;
-      const Scene small = load_scene(file, {ball, objects});
-      const Scene mixed = load_scene(file, {ball, objects, unused});
+      std::vector<std::string> with_unused = mix.overrides;
+      with_unused.push_back(mix.unused);
+      const Scene small = load_scene(kScenes / mix.file, mix.overrides);
+      const Scene fallback_scene = load_scene(kScenes / mix.file, with_unused);
       const gpu::DirectPassVariant& variant = gpu::direct_pass_variant(small, method);
-      EXPECT_TRUE(variant.height_fields);
-      EXPECT_EQ(variant.code & FACET_CODE_DIFFRACTION, 0u) << variant.name;
-      ASSERT_EQ(gpu::direct_pass_variant(mixed, method).code & FACET_CODE_DIFFRACTION,
-                uint32_t{FACET_CODE_DIFFRACTION});
+      const gpu::DirectPassVariant& fallback = gpu::direct_pass_variant(fallback_scene, method);
+      EXPECT_LT(variant.spirv.size(), fallback.spirv.size()) << variant.name;
+      EXPECT_EQ(variant.height_fields, fallback.height_fields);
       const Image alone = gpu::render_direct(*context, small, 40, 24, method);
-      const Image fallback = gpu::render_direct(*context, mixed, 40, 24, method);
-      ASSERT_EQ(alone.pixel_count(), fallback.pixel_count());
+      const Image with_fallback = gpu::render_direct(*context, fallback_scene, 40, 24, method);
+      ASSERT_EQ(alone.pixel_count(), with_fallback.pixel_count());
       int differing = 0;
       for (size_t i = 0; i < alone.pixel_count(); ++i)
-        if (alone.at(i) != fallback.at(i)) ++differing;
+        if (alone.at(i) != with_fallback.at(i)) ++differing;
       EXPECT_EQ(differing, 0);
     }
   EXPECT_EQ(context->validation_message_count(), 0u);
