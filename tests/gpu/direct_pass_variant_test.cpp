@@ -1,7 +1,6 @@
 // The direct pass's program variants (gpu/direct_pass_variant.hpp): every scene gets one that
 // compiles in all the code it runs, the smallest such, and a scene that mixes families outside
 // every smaller variant gets the one with everything, which renders the same bits.
-#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -13,6 +12,7 @@
 #include "gpu/render_layout.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/facet_paths.hpp"
+#include "support/frame_difference.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -30,15 +30,6 @@ std::vector<std::filesystem::path> shipped_scenes() {
 }
 
 bool covers(const gpu::DirectPassVariant& v, uint32_t code) { return (v.code & code) == code; }
-
-// Pixels whose colour or coverage differ between two frames of one size.
-int differing_pixels(const Image& a, const Image& b) {
-  EXPECT_EQ(a.pixel_count(), b.pixel_count());
-  int differing = 0;
-  for (size_t i = 0; i < std::min(a.pixel_count(), b.pixel_count()); ++i)
-    if (a.at(i) != b.at(i)) ++differing;
-  return differing;
-}
 
 TEST(DirectPassVariants, EveryShippedSceneGetsASmallerVariantThatCoversIt) {
   int fallbacks = 0, renders = 0;
@@ -155,7 +146,7 @@ TEST(DirectPassVariants, TheFallbackRendersTheSameBitsAsTheSmallVariant) {
   ASSERT_EQ(gpu::direct_pass_variant(mixed, method).code, uint32_t{FACET_CODE_ALL});
   const Image small = gpu::render_direct(*context, plain, 32, 18, method);
   const Image fallback = gpu::render_direct(*context, mixed, 32, 18, method);
-  EXPECT_EQ(differing_pixels(small, fallback), 0);
+  EXPECT_EQ(test::differing_samples(small, fallback), 0);
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
@@ -210,7 +201,7 @@ TEST(DirectPassVariants, MixesWithVariantsOfTheirOwnRenderTheSameBitsAsTheFallba
       EXPECT_EQ(variant.height_fields, fallback.height_fields);
       const Image alone = gpu::render_direct(*context, small, 40, 24, method);
       const Image with_fallback = gpu::render_direct(*context, fallback_scene, 40, 24, method);
-      EXPECT_EQ(differing_pixels(alone, with_fallback), 0);
+      EXPECT_EQ(test::differing_samples(alone, with_fallback), 0);
     }
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
@@ -231,7 +222,7 @@ TEST(DirectPassVariants, OrdersWithoutTheSpectralPathRenderTheSameBits) {
     EXPECT_EQ(gpu::direct_pass_variant(plain, method, false).code & FACET_CODE_DIFFRACTION_SPECTRAL, 0u);
     const Image alone = gpu::render_direct(*context, plain, 48, 48, method);
     const Image with_fallback = gpu::render_direct(*context, mixed, 48, 48, method);
-    EXPECT_EQ(differing_pixels(alone, with_fallback), 0);
+    EXPECT_EQ(test::differing_samples(alone, with_fallback), 0);
     int lit = 0;
     for (size_t i = 0; i < alone.pixel_count(); ++i)
       if (alone.at(i).r > 0.05f) ++lit;

@@ -13,6 +13,7 @@
 #include "lambert_scenes.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/facet_paths.hpp"
+#include "support/frame_difference.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -40,26 +41,13 @@ Scene with_unused_map(Scene scene, int n, Colormap::Interpolation interpolation)
   return scene;
 }
 
-// Pixels (colour and every auxiliary channel) that differ between two frames of the same size.
-int differing_samples(const Image& a, const Image& b) {
-  EXPECT_EQ(a.pixel_count(), b.pixel_count());
-  EXPECT_EQ(a.channels.size(), b.channels.size());
-  int differing = 0;
-  for (size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i)
-    if (a.rgb[i] != b.rgb[i]) ++differing;
-  for (size_t c = 0; c < a.channels.size() && c < b.channels.size(); ++c)
-    for (size_t i = 0; i < a.channels[c].values.size(); ++i)
-      if (a.channels[c].values[i] != b.channels[c].values[i]) ++differing;
-  return differing;
-}
-
 // Scenes a and b rendered by each of `methods` at 48x27: the same bits.
 void expect_same_frames(vk::Context& context, const Scene& a, const Scene& b,
                         std::initializer_list<const char*> methods) {
   for (const char* name : methods) {
     const RenderMethod method = RenderMethod::parse(name);
-    EXPECT_EQ(differing_samples(gpu::render_direct(context, a, 48, 27, method),
-                                gpu::render_direct(context, b, 48, 27, method)),
+    EXPECT_EQ(test::differing_samples(gpu::render_direct(context, a, 48, 27, method),
+                                      gpu::render_direct(context, b, 48, 27, method)),
               0)
         << name;
   }
@@ -81,7 +69,7 @@ TEST(UnrolledLoops, StepMapWalksDoNotDependOnTheScenesLongestMap) {
   for (int n : {7, 17}) {
     const Image longer = gpu::render_direct(
         *context, with_unused_map(plain, n, Colormap::Interpolation::Steps), 48, 27, method);
-    EXPECT_EQ(differing_samples(reference, longer), 0) << n << "-point map beside it";
+    EXPECT_EQ(test::differing_samples(reference, longer), 0) << n << "-point map beside it";
   }
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
@@ -96,7 +84,7 @@ TEST(UnrolledLoops, LinearMapWalksDoNotDependOnTheScenesLongestMap) {
   const Image reference = gpu::render_direct(*context, plain, 48, 27, method);
   const Image unrolled_longer =
       gpu::render_direct(*context, with_unused_map(plain, 12, Colormap::Interpolation::Linear), 48, 27, method);
-  EXPECT_EQ(differing_samples(reference, unrolled_longer), 0);
+  EXPECT_EQ(test::differing_samples(reference, unrolled_longer), 0);
   const Image looped =
       gpu::render_direct(*context, with_unused_map(plain, 17, Colormap::Interpolation::Linear), 48, 27, method);
   ASSERT_EQ(looped.rgb.size(), reference.rgb.size());
@@ -114,7 +102,7 @@ TEST(UnrolledLoops, ColourMapSearchesDoNotDependOnTheScenesLongestMap) {
   const Image reference = gpu::render_direct(*context, plain, 48, 27, naive);
   const Image longer =
       gpu::render_direct(*context, with_unused_map(plain, 300, Colormap::Interpolation::Linear), 48, 27, naive);
-  EXPECT_EQ(differing_samples(reference, longer), 0);
+  EXPECT_EQ(test::differing_samples(reference, longer), 0);
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 

@@ -1,0 +1,30 @@
+// Whether two renders of one scene are the same bits: for the tests that check that a faster or
+// smaller program (a variant, an unrolled loop) renders exactly what the general one does.
+#pragma once
+
+#include <cstddef>
+
+#include <gtest/gtest.h>
+
+#include "image/image.hpp"
+
+namespace facet::test {
+
+// Samples (colour, coverage and every auxiliary channel) that differ between two frames of the same
+// size; a difference in size or in the channels written is a test failure.
+inline int differing_samples(const Image& a, const Image& b) {
+  EXPECT_EQ(a.pixel_count(), b.pixel_count());
+  EXPECT_EQ(a.alpha.size(), b.alpha.size());
+  EXPECT_EQ(a.channels.size(), b.channels.size());
+  int differing = 0;
+  for (std::size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i)
+    if (a.rgb[i] != b.rgb[i]) ++differing;
+  for (std::size_t i = 0; i < a.alpha.size() && i < b.alpha.size(); ++i)
+    if (a.alpha[i] != b.alpha[i]) ++differing;
+  for (std::size_t c = 0; c < a.channels.size() && c < b.channels.size(); ++c)
+    for (std::size_t i = 0; i < a.channels[c].values.size() && i < b.channels[c].values.size(); ++i)
+      if (a.channels[c].values[i] != b.channels[c].values[i]) ++differing;
+  return differing;
+}
+
+}  // namespace facet::test
