@@ -117,9 +117,11 @@ float microsurface_mean_facet_specular(MicrosurfaceStatistics stats, vec2 alpha,
 }
 
 // The filtered radiance of a footprint with Gaussian statistics `stats` (docs/microsurface_filtering.md
-// eq. M7): E/pi V H_lit S_cos + E_amb/pi H S + V E R f_spec; v_x, v_y: the views one pixel step away.
-vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats, vec3 v, vec3 l, float visibility,
-                                    vec3 v_x, vec3 v_y) {
+// eq. M7): E/pi V H_lit S_cos + E_amb/pi H S + V E R f_spec; v_x, v_y: the views one pixel step away. `side`
+// is -1 where the field is seen from below: `stats` are then its mirror image's (microsurface_seen_statistics),
+// whose heights are the field's negated, and the height map reads the field's own, side h.
+vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats, float side, vec3 v, vec3 l,
+                                    float visibility, vec3 v_x, vec3 v_y) {
   MicrosurfaceVisibility vis = microsurface_visibility(stats, v, l);
   vec3 slope_sum = vec3(0.0), slope_cos_sum = vec3(0.0);
   // Without a slope colour map only the smooth cosine is integrated: the 3 x 3 rule suffices there.
@@ -146,7 +148,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
     for (int node_index = 0; node_index < MS_HEIGHT_NODES * lit_count; ++node_index) {
       int k = node_lit.x, lit_nodes = node_lit.y;
       float lambda = lit_nodes == 0 ? vis.lambda_v : vis.lambda_v + vis.lambda_l;
-      vec3 c = microsurface_height_colour(m, microsurface_height_node(k, stats.h_mean, stats.h_sigma, lambda));
+      vec3 c = microsurface_height_colour(m, side * microsurface_height_node(k, stats.h_mean, stats.h_sigma, lambda));
       if (lit_nodes == 1)
         heights_lit += c / float(MS_HEIGHT_NODES);
       else {
@@ -217,6 +219,15 @@ float microsurface_trace_weight(MicrosurfaceFootprint fp) {
   return clamp(2.0 - microsurface_footprint_texels(fp), 0.0, 1.0);
 }
 
+// The statistics of the field as seen from `side` (1: above the plane; -1: below, where it is shaded as its
+// mirror image z -> -z seen from above, whose heights and slopes are the field's negated; the slopes'
+// covariance is unchanged: eq. M10 of docs/microsurface_filtering.md).
+MicrosurfaceStatistics microsurface_seen_statistics(MicrosurfaceStatistics stats, float side) {
+  stats.h_mean *= side;
+  stats.s_mean *= side;
+  return stats;
+}
+
 // The unit direction toward the viewer of a ray d (any length) in `frame`.
 vec3 microsurface_view(BeckmannFacetFrame frame, vec3 d) {
   return vec3(dot(-d, frame.t), dot(-d, frame.b), dot(-d, frame.n)) / length(d);
@@ -232,8 +243,10 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
   BeckmannFacetFrame frame = BeckmannFacetFrame(t, b, n);  // the plane's
   vec3 v = microsurface_view(frame, d), v_x = microsurface_view(frame, fp.d_dx), v_y = microsurface_view(frame, fp.d_dy);
   vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, n));
-  // Seen from below, the field is shaded as its mirror image (the upper side's statistics).
-  if (v.z < 0.0) {
+  // Seen from below, the field is shaded as its mirror image seen from above (M10): views and light mirrored
+  // here, heights and slopes by microsurface_seen_statistics.
+  float side = v.z < 0.0 ? -1.0 : 1.0;
+  if (side < 0.0) {
     v.z = -v.z;
     l.z = -l.z;
     v_x.z = -v_x.z;
@@ -275,10 +288,12 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
   // The program that traces height fields shades footprints for filtered alone; the other, for mip and
   // colormip alone (renderer/gpu/direct_pass.cpp): each compiles only its own methods' code.
 #ifdef FACET_HEIGHT_FIELDS
-  return microsurface_filtered_radiance(m, stats, v, l, visibility, v_x, v_y);
+  return microsurface_filtered_radiance(m, microsurface_seen_statistics(stats, side), side, v, l, visibility, v_x, v_y);
 #else
   // mip and colormip: the mean slope as a point, no variance.
-  MicrosurfaceStatistics mean_point = microsurface_point_statistics(vec3(stats.h_mean, stats.s_mean));
+  // The mean slope lights the mirror image's facet (M10); the colours are the field's own.
+  MicrosurfaceStatistics seen = microsurface_seen_statistics(stats, side);
+  MicrosurfaceStatistics mean_point = microsurface_point_statistics(vec3(seen.h_mean, seen.s_mean));
   if (kTextureMethod == 1u)
     albedo = microsurface_height_colour(m, stats.h_mean) * microsurface_slope_colour(m, stats.s_mean);
   else

@@ -17,6 +17,7 @@
 #include "image/metrics.hpp"
 #include "scene/camera_path.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/frame_difference.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -40,15 +41,7 @@ struct Agreement {
 
 // Per channel |gpu - cpu| <= 2e-3 (1 + |cpu|): float shading of the same hit.
 Agreement agreement(const Image& gpu, const Image& cpu) {
-  int close = 0;
-  for (int y = 0; y < gpu.height; ++y)
-    for (int x = 0; x < gpu.width; ++x) {
-      const glm::vec3 a = gpu.at(x, y), b = cpu.at(x, y);
-      bool ok = true;
-      for (int c = 0; c < 3; ++c) ok = ok && std::abs(a[c] - b[c]) <= 2e-3f * (1.0f + std::abs(b[c]));
-      close += ok;
-    }
-  return {static_cast<double>(close) / (gpu.width * gpu.height), rmse(gpu, cpu)};
+  return {test::fraction_within(gpu, cpu, 2e-3f), rmse(gpu, cpu)};
 }
 
 void expect_same_samples(vk::Context& context, const Scene& s, const char* label, int width, int height, int k) {

@@ -1,7 +1,9 @@
-// Whether two renders of one scene are the same bits: for the tests that check that a faster or
-// smaller program (a variant, an unrolled loop) renders exactly what the general one does.
+// How two renders of one scene differ: whether they are the same bits (for the tests that check that a
+// faster or smaller program, a variant or an unrolled loop, renders exactly what the general one does), and
+// how many pixels agree to a tolerance (float shading of the same hits, the same surface described twice).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 
 #include <gtest/gtest.h>
@@ -25,6 +27,19 @@ inline int differing_samples(const Image& a, const Image& b) {
     for (std::size_t i = 0; i < a.channels[c].values.size() && i < b.channels[c].values.size(); ++i)
       if (a.channels[c].values[i] != b.channels[c].values[i]) ++differing;
   return differing;
+}
+
+// The fraction of pixels whose every colour channel lies within tolerance (1 + |b|) of b's.
+inline double fraction_within(const Image& a, const Image& b, float tolerance) {
+  EXPECT_EQ(a.pixel_count(), b.pixel_count());
+  std::size_t close = 0;
+  for (std::size_t i = 0; i < a.pixel_count() && i < b.pixel_count(); ++i) {
+    bool ok = true;
+    for (int c = 0; c < 3; ++c)
+      ok = ok && std::abs(a.at(i)[c] - b.at(i)[c]) <= tolerance * (1.0f + std::abs(b.at(i)[c]));
+    close += ok;
+  }
+  return static_cast<double>(close) / static_cast<double>(a.pixel_count());
 }
 
 }  // namespace facet::test
