@@ -285,14 +285,14 @@ vec3 microsurface_radiance(GpuMaterial m, GpuPlane plane, MicrosurfaceFootprint 
 #endif
   }
   MicrosurfaceStatistics stats = microsurface_statistics(sum.m0 / f.taps, sum.m1 / f.taps);
+  MicrosurfaceStatistics seen = microsurface_seen_statistics(stats, side);  // what the view and light meet (M10)
   // The program that traces height fields shades footprints for filtered alone; the other, for mip and
   // colormip alone (renderer/gpu/direct_pass.cpp): each compiles only its own methods' code.
 #ifdef FACET_HEIGHT_FIELDS
-  return microsurface_filtered_radiance(m, microsurface_seen_statistics(stats, side), side, v, l, visibility, v_x, v_y);
+  return microsurface_filtered_radiance(m, seen, side, v, l, visibility, v_x, v_y);
 #else
-  // mip and colormip: the mean slope as a point, no variance.
-  // The mean slope lights the mirror image's facet (M10); the colours are the field's own.
-  MicrosurfaceStatistics seen = microsurface_seen_statistics(stats, side);
+  // mip and colormip: the mean slope as a point, no variance; it lights the mirror image's facet (M10), the
+  // colours are the field's own.
   MicrosurfaceStatistics mean_point = microsurface_point_statistics(vec3(seen.h_mean, seen.s_mean));
   if (kTextureMethod == 1u)
     albedo = microsurface_height_colour(m, stats.h_mean) * microsurface_slope_colour(m, stats.s_mean);
