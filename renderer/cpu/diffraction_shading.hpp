@@ -30,8 +30,9 @@ class DiffractionShading {
   bool handles(uint32_t material) const { return material < entries_.size() && entries_[material] != nullptr; }
 
   // Radiance of the diffracted light, summed over the material's wavelength samples
-  // (diffraction_frame.glsl: rgb(sum BRDF xyz_weight) E cos_i visibility). n: shading normal facing
-  // the viewer; dpdu: the surface tangent; v: toward the viewer.
+  // (diffraction_frame.glsl: rgb(sum BRDF xyz_weight) E cos_i visibility). n: the shading normal as
+  // the scene gives it, on either side of the viewer (diffraction_directions); dpdu: the surface tangent; v: toward the
+  // viewer.
   glm::dvec3 radiance(uint32_t material, glm::dvec3 n, glm::dvec3 dpdu, glm::dvec3 v, double visibility) const;
 
   // The same at one wavelength 360 + 470 u nm (u in [0, 1)), weighted by 470 nm xyz_density: an

@@ -43,7 +43,8 @@ RTCRay embree_ray(const glm::dvec3& o, const glm::dvec3& d, double t_max) {
 // Turns the normals toward the side the ray comes from (see ray_caster.hpp).
 void face_toward_ray(Hit& hit, const glm::dvec3& d) {
   if (glm::dot(hit.geometric_normal, d) > 0.0) hit.geometric_normal = -hit.geometric_normal;
-  if (glm::dot(hit.shading_normal, hit.geometric_normal) < 0.0) hit.shading_normal = -hit.shading_normal;
+  hit.back_face = glm::dot(hit.shading_normal, hit.geometric_normal) < 0.0;
+  if (hit.back_face) hit.shading_normal = -hit.shading_normal;
 }
 
 // Whether a point of a finite plane lies on its rectangle (scene.hpp, Plane::size).

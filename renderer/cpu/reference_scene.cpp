@@ -46,8 +46,10 @@ ReferenceScene::ReferenceScene(const Scene& scene)
 
 std::optional<SurfaceHit> ReferenceScene::intersect(glm::dvec3 o, glm::dvec3 d) const {
   std::optional<SurfaceHit> best;
-  if (const auto hit = caster_.intersect(o, d))
+  if (const auto hit = caster_.intersect(o, d)) {
     best = SurfaceHit{hit->t, hit->position, hit->shading_normal, hit->uv, hit->material, hit->dpdu};
+    best->back_face = hit->back_face;
+  }
   for (const Patch& patch : patches_) {
     const auto hit = patch.field.intersect(o, d, best ? best->t : std::numeric_limits<double>::infinity());
     if (!hit) continue;

@@ -41,8 +41,7 @@ std::optional<Pair> plane_pair(const Scene& scene, const Plane& plane, const Pla
   if (plane.size && (std::abs(glm::dot(r, frame.tangent)) > 0.5 * plane.size->x ||
                      std::abs(glm::dot(r, frame.bitangent)) > 0.5 * plane.size->y))
     return std::nullopt;
-  const glm::dvec3 n = facing > 0.0 ? -frame.normal : frame.normal;
-  const auto dirs = kernels::f64::diffraction_directions(n, frame.tangent, scene.light.direction, -d);
+  const auto dirs = kernels::f64::diffraction_directions(frame.normal, frame.tangent, scene.light.direction, -d);
   if (!dirs.lit) return std::nullopt;
   return Pair{dirs.wi, dirs.wr};
 }

@@ -39,13 +39,14 @@ vec3 diffraction_spectral_xyz(GpuDiffractionMaterial m, vec3 wi, vec3 wr) {
 }
 #endif
 
-// Radiance diffracted toward v by diffraction material `index` at a point with shading normal n
-// (facing the viewer) and tangent dpdu, lit from l with the light's visibility. over_pixel (a constant of
-// the call site): `orders` takes the mean over the pixel whose (u, v) moves by pixel_steps per pixel step
-// (eqs. O1-O3 of docs/diffraction_fast_paths.md); the other methods take the colour at the pixel's centre.
-vec3 diffraction_shading(uint index, vec3 n, vec3 dpdu, vec3 v, vec3 l, float visibility, bool over_pixel,
-                         vec4 pixel_steps) {
-  DiffractionDirections d = diffraction_directions(n, dpdu, l, v);
+// Radiance diffracted toward v by diffraction material `index` at a point with shading normal n (facing
+// the viewer; `below`: turned from the surface's own, diffraction_directions_seen) and tangent dpdu, lit from
+// l with the light's visibility. over_pixel (a constant of the call site): `orders` takes the mean over the
+// pixel whose (u, v) moves by pixel_steps per pixel step (eqs. O1-O3 of docs/diffraction_fast_paths.md); the
+// other methods take the colour at the pixel's centre.
+vec3 diffraction_shading(uint index, vec3 n, bool below, vec3 dpdu, vec3 v, vec3 l, float visibility,
+                         bool over_pixel, vec4 pixel_steps) {
+  DiffractionDirections d = diffraction_directions_seen(n, dpdu, l, v, below);
   if (!d.lit || visibility == 0.0) return vec3(0.0);
   GpuDiffractionMaterial m = diffraction_material_at(index);
   vec3 rgb = vec3(0.0);

@@ -134,14 +134,16 @@ const bool kFiltersOrders = FACET_VARIANT_HAS(FACET_CODE_FILTERED) && FACET_VARI
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED) && FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_ORDERS)
 // The change of a grating's (u, v) = -(wi + wr)_xy per pixel step (xy along x, zw along y), eq. O1: the
 // neighbouring camera rays' views in the frames (normal, tangent) the primitive shows them, on each axis the
-// side where (u, v) changes less (smaller_pixel_step: a silhouette's outer side is not the pixel's).
-vec4 diffraction_pixel_uv_steps(Hit hit, vec3 p, vec3 n, vec3 o, vec3 d, vec3 l, vec2 film, float pixel_step) {
-  DiffractionDirections centre = diffraction_directions(n, surface_uv(hit, p).dpdu, l, -d);
+// side where (u, v) changes less (smaller_pixel_step: a silhouette's outer side is not the pixel's). The
+// neighbours take the pixel's side (`below`): one that grazes the silhouette sees the same face.
+vec4 diffraction_pixel_uv_steps(Hit hit, vec3 p, vec3 n, bool below, vec3 o, vec3 d, vec3 l, vec2 film,
+                                float pixel_step) {
+  DiffractionDirections centre = diffraction_directions_seen(n, surface_uv(hit, p).dpdu, l, -d, below);
   vec2 uv = -(centre.wi.xy + centre.wr.xy);
   vec2 to[4];  // toward +x, -x, +y, -y
   for (int k = 0; k < 4; ++k) {
     Neighbour q = neighbour_seen(hit, p, n, o, film, pixel_step, k);
-    DiffractionDirections w = diffraction_directions(q.n, surface_uv(hit, q.p).dpdu, l, -q.d);
+    DiffractionDirections w = diffraction_directions_seen(q.n, surface_uv(hit, q.p).dpdu, l, -q.d, below);
     to[k] = -(w.wi.xy + w.wr.xy) - uv;
   }
   return vec4(smaller_pixel_step(to[0], to[1]), smaller_pixel_step(to[2], to[3]));
@@ -256,11 +258,12 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
 #if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION)
   if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION) {
     vec4 uv_steps = vec4(0.0);
+    bool below = dot(hit.normal, d) > 0.0;  // n was turned: the grating is seen from below (eq. R1)
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED) && FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_ORDERS)
-    if (kFiltersOrders) uv_steps = diffraction_pixel_uv_steps(hit, p, n, o, d, l, film, pixel_step);
+    if (kFiltersOrders) uv_steps = diffraction_pixel_uv_steps(hit, p, n, below, o, d, l, film, pixel_step);
 #endif
-    diffracted =
-        diffraction_shading(m.kind.y, n, surface_uv(hit, p).dpdu, -d, l, visibility.x, kFiltersOrders, uv_steps);
+    diffracted = diffraction_shading(m.kind.y, n, below, surface_uv(hit, p).dpdu, -d, l, visibility.x, kFiltersOrders,
+                                     uv_steps);
   }
 #endif
   return lambert_radiance(albedo, n, l, globals.light_irradiance.rgb, visibility.x, globals.ambient.rgb) + diffracted;
