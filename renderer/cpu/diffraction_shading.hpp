@@ -31,8 +31,8 @@ class DiffractionShading {
 
   // Radiance of the diffracted light, summed over the material's wavelength samples
   // (diffraction_frame.glsl: rgb(sum BRDF xyz_weight) E cos_i visibility). n: the shading normal as
-  // the scene gives it, on either side of the viewer (diffraction_directions); dpdu: the surface tangent; v: toward the
-  // viewer.
+  // the scene gives it, the viewer on either side (diffraction_directions); dpdu: the surface tangent;
+  // v: toward the viewer.
   glm::dvec3 radiance(uint32_t material, glm::dvec3 n, glm::dvec3 dpdu, glm::dvec3 v, double visibility) const;
 
   // The same at one wavelength 360 + 470 u nm (u in [0, 1)), weighted by 470 nm xyz_density: an
