@@ -47,10 +47,10 @@ double DiffractionShading::brdf(const Entry& e, glm::dvec3 wi, glm::dvec3 wr, do
   return e.exact ? e.exact->evaluate(q).brdf : diffraction::evaluate_taylor(e.prepared.tables, q).brdf;
 }
 
-glm::dvec3 DiffractionShading::radiance(uint32_t material, glm::dvec3 n, glm::dvec3 dpdu, glm::dvec3 v,
+glm::dvec3 DiffractionShading::radiance(uint32_t material, glm::dvec3 n, bool back_face, glm::dvec3 dpdu, glm::dvec3 v,
                                         double visibility) const {
   const Entry& e = *entries_[material];
-  const auto d = k::diffraction_directions(n, dpdu, scene_.light.direction, v);
+  const auto d = k::diffraction_directions_seen(n, dpdu, scene_.light.direction, v, back_face);
   if (!d.lit || visibility == 0.0) return glm::dvec3(0.0);
   const diffraction::WavelengthSamples& s = e.prepared.samples;
   glm::dvec3 xyz(0.0);
@@ -58,10 +58,10 @@ glm::dvec3 DiffractionShading::radiance(uint32_t material, glm::dvec3 n, glm::dv
   return k::diffraction_radiance(xyz, d.wi.z, scene_.light.irradiance, visibility);
 }
 
-glm::dvec3 DiffractionShading::radiance_at(uint32_t material, glm::dvec3 n, glm::dvec3 dpdu, glm::dvec3 v,
-                                           double visibility, double u) const {
+glm::dvec3 DiffractionShading::radiance_at(uint32_t material, glm::dvec3 n, bool back_face, glm::dvec3 dpdu,
+                                           glm::dvec3 v, double visibility, double u) const {
   const Entry& e = *entries_[material];
-  const auto d = k::diffraction_directions(n, dpdu, scene_.light.direction, v);
+  const auto d = k::diffraction_directions_seen(n, dpdu, scene_.light.direction, v, back_face);
   if (!d.lit || visibility == 0.0) return glm::dvec3(0.0);
   const double span = diffraction::kCieLambdaMaxNm - diffraction::kCieLambdaMinNm;
   const double lambda = diffraction::kCieLambdaMinNm + span * u;

@@ -30,15 +30,16 @@ class DiffractionShading {
   bool handles(uint32_t material) const { return material < entries_.size() && entries_[material] != nullptr; }
 
   // Radiance of the diffracted light, summed over the material's wavelength samples
-  // (diffraction_frame.glsl: rgb(sum BRDF xyz_weight) E cos_i visibility). n: the shading normal as
-  // the scene gives it, the viewer on either side (diffraction_directions); dpdu: the surface tangent;
-  // v: toward the viewer.
-  glm::dvec3 radiance(uint32_t material, glm::dvec3 n, glm::dvec3 dpdu, glm::dvec3 v, double visibility) const;
+  // (diffraction_frame.glsl: rgb(sum BRDF xyz_weight) E cos_i visibility). n: shading normal facing
+  // the viewer; back_face: n is the scene's normal turned (diffraction_directions_seen's `below`); dpdu:
+  // the surface tangent; v: toward the viewer.
+  glm::dvec3 radiance(uint32_t material, glm::dvec3 n, bool back_face, glm::dvec3 dpdu, glm::dvec3 v,
+                      double visibility) const;
 
   // The same at one wavelength 360 + 470 u nm (u in [0, 1)), weighted by 470 nm xyz_density: an
   // unbiased one-sample estimate of radiance()'s integral, for the reference's per-sample wavelengths.
-  glm::dvec3 radiance_at(uint32_t material, glm::dvec3 n, glm::dvec3 dpdu, glm::dvec3 v, double visibility,
-                         double u) const;
+  glm::dvec3 radiance_at(uint32_t material, glm::dvec3 n, bool back_face, glm::dvec3 dpdu, glm::dvec3 v,
+                         double visibility, double u) const;
 
  private:
   struct Entry {

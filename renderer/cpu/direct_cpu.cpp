@@ -43,7 +43,7 @@ Image render_direct_cpu(const Scene& scene, int width, int height, const diffrac
         double visibility = glm::dot(n, l) > 0.0 && caster.occluded(origin, l, INFINITY) ? 0.0 : 1.0;
         color = shade_macro_surface(scene, scene.materials[hit->material], n, -d, hit->uv, visibility);
         if (diffracted.handles(hit->material))
-          color += diffracted.radiance(hit->material, hit->own_normal(), hit->dpdu, -d, visibility);
+          color += diffracted.radiance(hit->material, n, hit->back_face, hit->dpdu, -d, visibility);
       }
       image.set(x, y, glm::vec3(color));
     }

@@ -32,9 +32,9 @@ struct Hit {
   glm::dvec2 uv;
   uint32_t material;
   glm::dvec3 dpdu{0.0};  // dp/du of the uv parameterisation, as render/trace.glsl's surface_uv (0: degenerate)
-  bool back_face = false;  // shading_normal was turned: the ray met the side opposite the scene's normal
-  // The shading normal as the scene gives it, on the side a grating's heights rise toward (diffraction_frame.glsl).
-  glm::dvec3 own_normal() const { return back_face ? -shading_normal : shading_normal; }
+  // shading_normal was turned: the ray met the side opposite the scene's normal (a grating seen from below,
+  // diffraction_frame.glsl)
+  bool back_face = false;
 };
 
 class RayCaster {

@@ -115,7 +115,7 @@ class PixelIntegrator {
     if (!hit.micro) {
       glm::dvec3 c = shade_macro_surface(scene_, material, hit.normal, -d, hit.uv, visibility);
       if (diffracted_.handles(hit.material))
-        c += diffracted_.radiance_at(hit.material, hit.own_normal(), hit.dpdu, -d, visibility, wavelength_u);
+        c += diffracted_.radiance_at(hit.material, hit.normal, hit.back_face, hit.dpdu, -d, visibility, wavelength_u);
       return c;
     }
     const auto& m = std::get<MicrosurfaceMaterial>(material);

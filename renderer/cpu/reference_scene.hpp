@@ -29,7 +29,6 @@ struct SurfaceHit {
   glm::dvec2 slope{0.0};
   glm::dvec3 tangent{0.0};
   bool back_face = false;  // macro hits: as RayCaster's Hit
-  glm::dvec3 own_normal() const { return back_face ? -normal : normal; }
 };
 
 class ReferenceScene {

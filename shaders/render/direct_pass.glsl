@@ -156,7 +156,8 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   if (hit.material == kNoHit) return globals.background.rgb;
   vec3 p = o + hit.t * d;
   vec3 n = normalize(hit.normal);
-  if (dot(n, d) > 0.0) n = -n;
+  bool back_face = dot(n, d) > 0.0;  // n turned toward the viewer: a grating is seen from below (eq. R1)
+  if (back_face) n = -n;
   vec3 l = globals.light_direction.xyz;
   GpuMaterial m = material_at(hit.material);
   bool field_hit = false;
@@ -258,11 +259,10 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
 #if FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION)
   if (kHasDiffraction && m.kind.x == FACET_MATERIAL_DIFFRACTION) {
     vec4 uv_steps = vec4(0.0);
-    bool below = dot(hit.normal, d) > 0.0;  // n was turned: the grating is seen from below (eq. R1)
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED) && FACET_VARIANT_HAS(FACET_CODE_DIFFRACTION_ORDERS)
-    if (kFiltersOrders) uv_steps = diffraction_pixel_uv_steps(hit, p, n, below, o, d, l, film, pixel_step);
+    if (kFiltersOrders) uv_steps = diffraction_pixel_uv_steps(hit, p, n, back_face, o, d, l, film, pixel_step);
 #endif
-    diffracted = diffraction_shading(m.kind.y, n, below, surface_uv(hit, p).dpdu, -d, l, visibility.x, kFiltersOrders,
+    diffracted = diffraction_shading(m.kind.y, n, back_face, surface_uv(hit, p).dpdu, -d, l, visibility.x, kFiltersOrders,
                                      uv_steps);
   }
 #endif

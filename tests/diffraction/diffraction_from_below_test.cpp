@@ -7,8 +7,6 @@
 // A frame that turned only the normal (and x with it), as facet's did before eq. R1, renders what the
 // surface turned over with its heights negated but not mirrored would show from its own side: the "wrong
 // turn" each test renders to show that the comparison can fail.
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -53,32 +51,33 @@ const diffraction::Grating& grating_of(const Scene& s) {
   return *std::get<DiffractionMaterial>(s.materials.at(0)).grating;
 }
 
-// The same surface with normal -n and tangent -t: heights h'(i, j) = -h(i, -j mod N) (rows are y).
+// `scene` with its grating's heights h(i, j) (i along x, j the row along y) replaced by heights(i, j).
+template <class Heights>
+void regrate(Scene& scene, const Heights& heights) {
+  auto g = std::make_shared<diffraction::Grating>(grating_of(scene));
+  for (int j = 0; j < g->samples; ++j)
+    for (int i = 0; i < g->samples; ++i) g->height_nm[static_cast<std::size_t>(j) * g->samples + i] = heights(i, j);
+  std::get<DiffractionMaterial>(scene.materials.at(0)).grating = g;
+}
+
+// The same surface with normal -n and tangent -t: heights h'(i, j) = -h(i, -j mod N).
 Scene turned_over(nlohmann::json document, const Scene& original) {
   document["objects"][0]["normal"] = {0, 0, -1};
   for (auto& c : document["objects"][0]["tangent"]) c = -c.get<double>();
   Scene s = parse_scene(document, kScenes / "turned_over.json");
   const diffraction::Grating& g = grating_of(original);
-  auto turned = std::make_shared<diffraction::Grating>(g);
-  const int n = g.samples;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      turned->height_nm[static_cast<std::size_t>(j) * n + i] =
-          -g.height_nm[static_cast<std::size_t>((n - j) % n) * n + i];
-  std::get<DiffractionMaterial>(s.materials.at(0)).grating = turned;
+  regrate(s, [&](int i, int j) {
+    return -g.height_nm[static_cast<std::size_t>((g.samples - j) % g.samples) * g.samples + i];
+  });
   return s;
 }
 
-// The description a frame that turned only the normal would have matched: heights negated, not mirrored.
-Scene negated_only(const Scene& turned) {
+// The description a frame that turned only the normal would have matched: turned over, its heights negated
+// but not mirrored, -h(i, j).
+Scene negated_only(const Scene& turned, const Scene& original) {
   Scene s = turned;
-  auto negated = std::make_shared<diffraction::Grating>(grating_of(turned));
-  const int n = negated->samples;
-  std::vector<double> rows = negated->height_nm;
-  for (int j = 0; j < n; ++j)
-    std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>((n - j) % n) * n, n,
-                negated->height_nm.begin() + static_cast<std::ptrdiff_t>(j) * n);
-  std::get<DiffractionMaterial>(s.materials.at(0)).grating = negated;
+  const diffraction::Grating& g = grating_of(original);
+  regrate(s, [&](int i, int j) { return -g.height_nm[static_cast<std::size_t>(j) * g.samples + i]; });
   return s;
 }
 
@@ -111,21 +110,8 @@ std::vector<Grating> gratings() {
 }
 
 void blaze_along_tangent(Scene& scene) {
-  auto blazed = std::make_shared<diffraction::Grating>(grating_of(scene));
-  const int n = blazed->samples, per_period = 20;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      blazed->height_nm[static_cast<std::size_t>(j) * n + i] = 150.0 * (2.0 * (j % per_period) / per_period - 1.0);
-  std::get<DiffractionMaterial>(scene.materials.at(0)).grating = blazed;
-}
-
-double peak(const Image& image) {
-  double m = 0.0;
-  for (size_t i = 0; i < image.pixel_count(); ++i) {
-    const glm::vec3 c = image.at(i);
-    m = std::max({m, double(std::abs(c.r)), double(std::abs(c.g)), double(std::abs(c.b))});
-  }
-  return m;
+  const int per_period = 20;
+  regrate(scene, [&](int, int j) { return 150.0 * (2.0 * (j % per_period) / per_period - 1.0); });
 }
 
 struct BothWays {
@@ -150,8 +136,8 @@ TEST(DiffractionFromBelow, EveryMethodShadesTheUndersideAsTheSameSurfaceFromAbov
     const bool orders_walked = !gpu::orders_fall_back(
         gpu::plan_diffraction(*context, scenes.from_below, gpu::RenderMethod::parse("diffraction:orders").diffraction));
     EXPECT_EQ(orders_walked, g.blazed) << g.name;
-    const Image wrong =
-        gpu::render_direct(*context, negated_only(scenes.from_above), kSize, kSize, gpu::RenderMethod::parse("naive"));
+    const Image wrong = gpu::render_direct(*context, negated_only(scenes.from_above, scenes.from_below), kSize, kSize,
+                                           gpu::RenderMethod::parse("naive"));
     for (const char* method :
          {"diffraction:spectral", "diffraction:orders", "diffraction:preintegrated", "filtered (orders)"}) {
       // `filtered` averages `orders` over the pixel, from the neighbouring rays' frames on the pixel's side.
@@ -165,10 +151,10 @@ TEST(DiffractionFromBelow, EveryMethodShadesTheUndersideAsTheSameSurfaceFromAbov
       const double close = test::fraction_within(below, above, kTolerance);
       const double close_to_wrong = test::fraction_within(below, wrong, kTolerance);
       std::printf("%s, %s: %.4f of pixels within tolerance (peak %.3g); of the wrong turn's %.4f\n", g.name, method,
-                  close, peak(below), close_to_wrong);
+                  close, test::peak_component(below), close_to_wrong);
       EXPECT_GE(close, 0.995) << g.name << ", " << method;
-      EXPECT_GT(peak(below), 0.5) << g.name << ", " << method;      // orders in sight, not only the base
-      EXPECT_LT(close_to_wrong, 0.95) << g.name << ", " << method;  // the pattern has no mirror symmetry
+      EXPECT_GT(test::peak_component(below), 0.5) << g.name << ", " << method;  // orders in sight, not only the base
+      EXPECT_LT(close_to_wrong, 0.95) << g.name << ", " << method;              // the pattern has no mirror symmetry
     }
   }
 }
@@ -181,15 +167,15 @@ TEST(DiffractionFromBelow, TheCpuRenderersTurnTheFrameAlike) {
     const Image below = cpu::render_direct_cpu(scenes.from_below, kSize, kSize);
     const double twin =
         test::fraction_within(below, cpu::render_direct_cpu(scenes.from_above, kSize, kSize), kTolerance);
-    const double wrong =
-        test::fraction_within(below, cpu::render_direct_cpu(negated_only(scenes.from_above), kSize, kSize), kTolerance);
+    const double wrong = test::fraction_within(
+        below, cpu::render_direct_cpu(negated_only(scenes.from_above, scenes.from_below), kSize, kSize), kTolerance);
     cpu::ReferenceOptions options;
     options.width = options.height = kSize / 2;
     options.grid = 1;
     const double reference = test::fraction_within(cpu::render_reference(scenes.from_below, options),
                                                    cpu::render_reference(scenes.from_above, options), kTolerance);
     std::printf("%s: CPU twin %.4f, reference %.4f of pixels within tolerance (peak %.3g); the wrong turn %.4f\n",
-                g.name, twin, reference, peak(below), wrong);
+                g.name, twin, reference, test::peak_component(below), wrong);
     EXPECT_GE(twin, 0.995) << g.name;
     EXPECT_GE(reference, 0.995) << g.name;
     EXPECT_LT(wrong, 0.95) << g.name;

@@ -18,6 +18,7 @@
 #include "kernels/shared.hpp"
 #include "plate_scene.hpp"
 #include "scene/camera_frame.hpp"
+#include "support/frame_difference.hpp"
 #include "support/vulkan_fixture.hpp"
 
 namespace facet {
@@ -28,12 +29,6 @@ constexpr double kPeriodNm = 1600.0;
 using test::plate_scene;  // period kPeriodNm
 
 double largest(glm::dvec3 v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
-
-double max_component(const Image& image) {
-  double m = 0.0;
-  for (size_t i = 0; i < image.pixel_count(); ++i) m = std::max(m, largest(image.at(i)));
-  return m;
-}
 
 TEST(DiffractionRender, GpuMatchesTheDoubleTwin) {
   // Camera looking down at the plate, seeing orders -2..2 across the image; the middle of the 25
@@ -53,7 +48,7 @@ TEST(DiffractionRender, GpuMatchesTheDoubleTwin) {
   // 360 nm) relative per radian on a peak's flank: ~2e-5; the window argument sigma k u (<= 280) is
   // rounded to ~3e-5 and each Taylor sum to ~eps e^x (docs/diffraction.md), all relative to the
   // peak's value. Tolerance: 1e-4 of the image's peak (measured 4e-6).
-  const double peak = max_component(cpu);
+  const double peak = test::peak_component(cpu);
   ASSERT_GT(peak, 1.0);  // the orders are there
   double worst = 0.0;
   for (size_t i = 0; i < cpu.pixel_count(); ++i)
@@ -145,13 +140,14 @@ TEST(DiffractionRender, ExactReferenceAgreesWithTheTaylorTwinWithinTheStratifica
   glm::dvec3 total_variation(0.0), previous(0.0);
   const int steps = 20000;
   for (int i = 0; i <= steps; ++i) {
-    const glm::dvec3 g = taylor.radiance_at(0, {0, 0, 1}, {0, 1, 0}, -view, 1.0, double(i) / steps * (1 - 1e-12));
+    const glm::dvec3 g =
+        taylor.radiance_at(0, {0, 0, 1}, false, {0, 1, 0}, -view, 1.0, double(i) / steps * (1 - 1e-12));
     if (i > 0) total_variation += glm::abs(g - previous);
     previous = g;
   }
   // Slack 1e-4 of the peak: the twin's 0.25 nm trapezoid sum and 1e-9 Taylor tolerance, and the
   // 1.7e-6 rad spread of the rays (the BRDF changes by k sigma = 140 per radian, relative), are all below it.
-  const double peak = max_component(twin);
+  const double peak = test::peak_component(twin);
   ASSERT_GT(peak, 0.05);
   const glm::dvec3 bound = total_variation / double(grid * grid) + glm::dvec3(1e-4 * peak);
   for (size_t i = 0; i < twin.pixel_count(); ++i) {
@@ -177,8 +173,8 @@ TEST(DiffractionRender, ExactAndTaylorShadingAgreeAtATightTolerance) {
   for (double vx = -0.9; vx <= 0.9; vx += 0.01)
     for (double vy : {0.0, 0.002, 0.3}) {
       const glm::dvec3 v = test::direction(vx, vy);
-      a.push_back(taylor.radiance(0, {0, 0, 1}, {0, 1, 0}, v, 1.0));
-      b.push_back(exact.radiance(0, {0, 0, 1}, {0, 1, 0}, v, 1.0));
+      a.push_back(taylor.radiance(0, {0, 0, 1}, false, {0, 1, 0}, v, 1.0));
+      b.push_back(exact.radiance(0, {0, 0, 1}, false, {0, 1, 0}, v, 1.0));
       peak = std::max(peak, largest(b.back()));
     }
   ASSERT_GT(peak, 1.0);

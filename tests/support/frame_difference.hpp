@@ -3,6 +3,7 @@
 // how many pixels agree to a tolerance (float shading of the same hits, the same surface described twice).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -27,6 +28,14 @@ inline int differing_samples(const Image& a, const Image& b) {
     for (std::size_t i = 0; i < a.channels[c].values.size() && i < b.channels[c].values.size(); ++i)
       if (a.channels[c].values[i] != b.channels[c].values[i]) ++differing;
   return differing;
+}
+
+// The largest |channel| of any pixel: a frame's peak, for tolerances relative to it.
+inline double peak_component(const Image& image) {
+  double peak = 0.0;
+  for (std::size_t i = 0; i < image.pixel_count(); ++i)
+    for (int c = 0; c < 3; ++c) peak = std::max(peak, double(std::abs(image.at(i)[c])));
+  return peak;
 }
 
 // The fraction of pixels whose every colour channel lies within tolerance (1 + |b|) of b's.
