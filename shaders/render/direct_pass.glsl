@@ -155,9 +155,9 @@ vec4 diffraction_pixel_uv_steps(Hit hit, vec3 p, vec3 n, bool below, vec3 o, vec
 vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   if (hit.material == kNoHit) return globals.background.rgb;
   vec3 p = o + hit.t * d;
-  vec3 n = normalize(hit.normal);
-  bool back_face = dot(n, d) > 0.0;  // n turned toward the viewer: a grating is seen from below (eq. R1)
-  if (back_face) n = -n;
+  FacingNormal facing = facing_normal(hit, d);
+  vec3 n = facing.n;
+  bool back_face = facing.back_face;
   vec3 l = globals.light_direction.xyz;
   GpuMaterial m = material_at(hit.material);
   bool field_hit = false;
@@ -275,8 +275,7 @@ vec4 radiance(vec2 film, float pixel_step) {
   vec3 d = camera_ray(film);
   Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields);
   if (kWritesAovs && hit.material != kNoHit) {
-    vec3 n = normalize(hit.normal);
-    aov_depth_normal = vec4(hit.t * dot(d, globals.camera_forward.xyz), dot(n, d) > 0.0 ? -n : n);
+    aov_depth_normal = vec4(hit.t * dot(d, globals.camera_forward.xyz), facing_normal(hit, d).n);
     // uv of macro-surfaces; a microsurface's hits keep 0 (its field has texel coordinates of its own).
     if (material_at(hit.material).kind.x != FACET_MATERIAL_MICROSURFACE)
       aov_uv_error.xy = surface_uv(hit, o + hit.t * d).uv;

@@ -193,6 +193,31 @@ SurfaceSeenBy surface_seen_by(Hit hit, vec3 p, vec3 o, vec3 d_n) {
   return SurfaceSeenBy(q, n);
 }
 
+// The hit's unit shading normal turned to the side the ray d comes from, as renderer/cpu/ray_caster.cpp's
+// face_toward_ray turns it: to the side of the surface's geometric normal that faces the ray. For a plane, a
+// sphere or a field that is the shading normal itself; a triangle's interpolated vertex normal can lean away
+// from the ray near a smooth mesh's silhouette while its face is seen from the front, and turning it by the ray
+// alone shaded such hits as the mesh's other side (default.json's torus: a band 8 % too dark at its far rim).
+// `back_face`: the surface is seen from behind its normal (a grating seen from below, eq. R1).
+struct FacingNormal {
+  vec3 n;
+  bool back_face;
+};
+
+FacingNormal facing_normal(Hit hit, vec3 d) {
+  vec3 n = normalize(hit.normal);
+  bool back_face = dot(n, d) > 0.0;
+#if FACET_VARIANT_HAS(FACET_CODE_TRIANGLES)
+  if (kHasTriangles && hit.primitive == kTriangle) {
+    GpuTriangle tri = triangle_at(hit.index);
+    vec3 face = cross(tri.p1.xyz - tri.p0.xyz, tri.p2.xyz - tri.p0.xyz);
+    float toward = dot(n, face);
+    back_face = dot(face, d) > 0.0 ? toward > 0.0 : toward < 0.0;
+  }
+#endif
+  return FacingNormal(back_face ? -n : n, back_face);
+}
+
 // uv at p and the tangents dp/du, dp/dv (the conventions of renderer/cpu/ray_caster.cpp).
 struct SurfaceUv {
   vec2 uv;
