@@ -73,6 +73,12 @@ bool computes_estimate(bool error_channel, bool adaptive, bool refining) {
   return error_channel || (adaptive && !refining);
 }
 
+// Whether the estimate takes its tiling term (docs/error_estimate.md, eq. 8: a second tiling of every footprint,
+// four times the first's taps): for the error channel of a frame rendered in one pass. filtered:adaptive's plan
+// ranks by the estimate without it: at equal device time its refinements remove more error than the term's
+// better ranking does.
+bool compares_tilings(bool error_channel, bool adaptive) { return error_channel && !adaptive; }
+
 // The points of the scene's longest colour map of this interpolation on a colour-mapped texture (0: none).
 std::size_t longest_texture_colormap(const Scene& scene, Colormap::Interpolation interpolation) {
   std::size_t longest = 0;
@@ -339,7 +345,7 @@ double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, in
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const int k = samples_per_axis_;
   const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread,
-                     uvec4(0, skips_estimate(false), 0, 0)};
+                     uvec4(0, skips_estimate(false), compares_tilings(aovs_.error, adaptive_samples_per_axis_ > 0), 0)};
   return kernel_->dispatch(bindings, &tile, groups);
 }
 

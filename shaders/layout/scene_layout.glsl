@@ -100,7 +100,9 @@ struct GpuTile {
   uvec4 spread;   // x: the tile's workgroups n, y: s, coprime to n: workgroup g renders block g s mod n (gpu/workgroup_order.hpp)
   uvec4 list;     // x: 0 renders the rectangle; n > 0 renders the n pixels of the pixel list instead (filtered:adaptive);
                   // y: 1 leaves out the texture's error estimate (a frame without an `error` channel, or its
-                  // refinement: filtered:adaptive's first pass ranks by it)
+                  // refinement: filtered:adaptive's first pass ranks by it); z: 1 adds its tiling term (eq. 8 of
+                  // docs/error_estimate.md: four times the taps), for the error channel of a frame that is not
+                  // filtered:adaptive's (whose plan would spend its budget on it)
 };
 
 #endif

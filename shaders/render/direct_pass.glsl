@@ -99,9 +99,29 @@ vec4 aov_lit = vec4(0.0);
 // This invocation's work so far (kCountsWork): renderer/gpu/work_counter.hpp finds them by name.
 uint facet_work_fma = 0u;
 uint facet_work_reads = 0u;
-// kappa of eq. 1 (docs/error_estimate.md): the filtered colour's error per unit of the mapped colour's
-// spread over the footprint, fitted on docs/error_estimate/unseen.json (no shipped scene).
+// The texture's error estimate (docs/error_estimate.md). kappa of eq. 1: the filtered colour's error per unit
+// of the mapped colour's spread over the footprint, fitted on docs/error_estimate/unseen.json (no shipped
+// scene). With the tiling term (eq. 8: first order in the sub-footprints' size, so twice the difference from
+// the tiling twice as fine) the two add in quadrature (eq. 9), scaled by kErrorScale, fitted on the same scene.
 const float kErrorMismatch = 0.076;
+const float kErrorScale = 0.44;
+
+// |albedo - finer| per channel, 0 where it is within the float rounding of a mean of up to 8 x 4^2 taps
+// (1e-5 of the colour): a footprint within one step of a step map is exact, and its two tilings' rounding
+// would rank it among the erring pixels.
+vec3 tiling_difference(vec3 albedo, vec3 finer) {
+  vec3 d = abs(albedo - finer);
+  return mix(d, vec3(0.0), lessThanEqual(d, 1e-5 * (1.0 + abs(albedo))));
+}
+
+// From the spread's and the tilings' radiance: eq. 9 where the dispatch compares tilings (GpuTile::list.z), else
+// eq. 1 alone (filtered:adaptive's ranking).
+float texture_error_term(vec3 spread, vec3 tilings) {
+  float law = kErrorMismatch * (spread.r + spread.g + spread.b) / 3.0;
+  if (tile.list.z == 0u) return law;
+  float tiling = 2.0 * (tilings.r + tilings.g + tilings.b) / 3.0;
+  return kErrorScale * sqrt(law * law + tiling * tiling);
+}
 
 vec3 camera_ray(vec2 film) {
   return camera_ray_direction(globals.camera_forward.xyz, globals.camera_right.xyz, globals.camera_up.xyz, film,
@@ -246,11 +266,13 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
       duv_dx = uv_differential(o, camera_ray(film + vec2(pixel_step, 0.0)), p, n, s.dpdu, s.dpdv);
       duv_dy = uv_differential(o, camera_ray(film + vec2(0.0, pixel_step)), p, n, s.dpdu, s.dpdv);
     }
-    vec3 spread;
-    albedo = textured_albedo(m, s.uv, duv_dx, duv_dy, spread);
-    if (kWritesAovs) {  // the albedo's spread as radiance, scaled by the filter-mismatch factor (eq. 1)
-      vec3 e = lambert_radiance(spread, n, l, globals.light_irradiance.rgb, visibility.x, globals.ambient.rgb);
-      aov_uv_error.z = kErrorMismatch * (e.r + e.g + e.b) / 3.0;
+    vec3 spread, finer;
+    albedo = textured_albedo(m, s.uv, duv_dx, duv_dy, spread, finer);
+    if (kWritesAovs) {  // the texture term (eq. 9): the law's (eq. 1) and the tiling's (eq. 8), as radiance
+      vec3 e_law = lambert_radiance(spread, n, l, globals.light_irradiance.rgb, visibility.x, globals.ambient.rgb);
+      vec3 e_tiling = lambert_radiance(tiling_difference(albedo, finer), n, l, globals.light_irradiance.rgb, visibility.x,
+                                       globals.ambient.rgb);
+      aov_uv_error.z = texture_error_term(e_law, e_tiling);
       aov_uv_error.w = 1.0;  // the texture term models this hit (eq. 3' leaves it alone)
     }
   }

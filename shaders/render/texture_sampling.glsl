@@ -471,11 +471,14 @@ const float kFilteredSplit = float(FACET_RENDER_FILTERED_SPLIT);
 // `colormip` average the taps' values or colours. `filtered` tiles a footprint wider than a texel
 // with kFilteredSplit^2 sub-footprints, each covered by the same number of taps as the whole (one
 // level finer), and integrates the colour map against each tap's own Gaussian: the pixel's value law
-// is the mixture of the taps' (eq. M1), not one Gaussian of the pooled moments. `spread` is the mean
-// of the taps' colour spreads (colormap_spread, eq. M2) where the error estimate is written
-// (kEstimatesError and filtered, unless the dispatch leaves it out), else 0.
-vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 spread) {
+// is the mixture of the taps' (eq. M1), not one Gaussian of the pooled moments. Where the error estimate
+// is written (kEstimatesError and filtered, unless the dispatch leaves it out), `spread` is the mean of the
+// taps' colour spreads (colormap_spread, eq. 2 of docs/error_estimate.md) and, where the dispatch asks for the
+// tiling term, `finer` the same albedo with the footprint tiled twice as finely per axis (eq. 8); elsewhere
+// `spread` is 0 and `finer` the albedo itself.
+vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 spread, out vec3 finer) {
   spread = vec3(0.0);
+  finer = vec3(0.0);
   // A pipeline without kEstimatesError has no estimate code; one with it may leave the estimate out per
   // dispatch (GpuTile::list.y: the spread's loops then run one masked trip per tap).
   bool estimates = kEstimatesError && kTextureMethod == 3u && tile.list.y == 0u;
@@ -489,44 +492,56 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   // stratum splits only as far as needed to tile the pixel twice as finely per axis as the first pass,
   // so from K = 4 on it keeps one row of taps (docs/error_estimate.md, "Refined strata").
   float refined_split = max(1.0, ceil(2.0 * kFilteredSplit / float(tile.stratum.w)));
-  float split = kTextureMethod >= 3u && length(f.major * size) > 1.0 ? (tile.list.x == 0u ? kFilteredSplit : refined_split) : 1.0;
-  float along = f.taps * split;
-  // Each tap is a split-th of the whole footprint's per axis: one level finer per halving, except where
-  // the whole footprint was clamped to the coarsest level (its own width is unknown there).
-  float coarsest = float(m.texture.y) - 1.0;
-  float lod = f.lod >= coarsest ? f.lod : max(f.lod - log2(split), 0.0);
+  float first_split = kTextureMethod >= 3u && length(f.major * size) > 1.0 ? (tile.list.x == 0u ? kFilteredSplit : refined_split) : 1.0;
   // filtered tiles the pixel's own parallelogram, whose sub-parallelograms' level-0 variance is exact
   // (linearised_tap_variance): along its longer edge, as many taps as the principal axes ask for; mip and
   // colormip lay their one row of taps along the principal major axis.
   vec2 major = kTextureMethod >= 3u ? f.edge_long : f.major;
   vec2 minor = kTextureMethod >= 3u ? f.edge_short : f.minor;
-  vec2 tap_major = major * size / along, tap_minor = minor * size / split;  // one tap's axes, in texels
-  vec3 colour = vec3(0.0);
-  MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
-  // One loop over the taps (k along, j across within it; next_row_major), not a loop in a loop, which cost
-  // the noise plane's `filtered` a quarter of its device time. The sums run in the nested loops' order.
-  float count = along * split;
+  float coarsest = float(m.texture.y) - 1.0;
   WalkedColormap walked = walked_colormap(map);
-  ivec2 kj = ivec2(0);
-  for (float i = 0.0; i < count; i += 1.0) {
-    vec2 tap = uv + major * ((float(kj.x) + 0.5) / along - 0.5) + minor * ((float(kj.y) + 0.5) / split - 0.5);
-    if (kTextureMethod == 2u) {
-      colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod, false).rgb;
-    } else if (kTextureMethod == 1u) {
-      colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod, true).x);
+  vec3 albedo = vec3(0.0);
+  // The estimate's second tiling (GpuTile::list.z) is a second trip of the same code (lavapipe compiles each call
+  // site on its own, and skips a loop's trip that no lane takes).
+  uint tilings = estimates && tile.list.z == 1u ? 2u : 1u;
+  for (uint tiling = 0u; tiling < tilings; ++tiling) {
+    float split = tiling == 0u ? first_split : 2.0 * first_split;
+    float along = f.taps * split;
+    // Each tap is a split-th of the whole footprint's per axis: one level finer per halving, except where
+    // the whole footprint was clamped to the coarsest level (its own width is unknown there).
+    float lod = f.lod >= coarsest ? f.lod : max(f.lod - log2(split), 0.0);
+    vec2 tap_major = major * size / along, tap_minor = minor * size / split;  // one tap's axes, in texels
+    vec3 colour = vec3(0.0);
+    MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
+    // One loop over the taps (k along, j across within it; next_row_major), not a loop in a loop, which cost
+    // the noise plane's `filtered` a quarter of its device time. The sums run in the nested loops' order.
+    float count = along * split;
+    ivec2 kj = ivec2(0);
+    for (float i = 0.0; i < count; i += 1.0) {
+      vec2 tap = uv + major * ((float(kj.x) + 0.5) / along - 0.5) + minor * ((float(kj.y) + 0.5) / split - 0.5);
+      if (kTextureMethod == 2u) {
+        colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod, false).rgb;
+      } else if (kTextureMethod == 1u) {
+        colour += colormap_at(map, sample_trilinear(m.texture.x, m.texture.y, tap, lod, true).x);
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
-    } else {
-      vec2 t = footprint_moments(levels, tap, tap_major, tap_minor);
-      float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
-      vec3 mean = colormap_gaussian(walked, t.x, sigma);
-      colour += mean;
-      if (estimates) spread += colormap_spread(walked, t.x, sigma, mean);
+      } else {
+        vec2 t = footprint_moments(levels, tap, tap_major, tap_minor);
+        float sigma = sqrt(max(t.y - t.x * t.x, 0.0));
+        vec3 mean = colormap_gaussian(walked, t.x, sigma);
+        colour += mean;
+        if (estimates && tiling == 0u) spread += colormap_spread(walked, t.x, sigma, mean);
 #endif
+      }
+      kj = next_row_major(kj, int(split));
     }
-    kj = next_row_major(kj, int(split));
+    if (tiling == 0u) {
+      albedo = colour / count;
+      finer = albedo;
+      if (estimates) spread /= count;
+    } else {
+      finer = colour / count;
+    }
   }
-  vec3 albedo = colour / count;
-  if (estimates) spread /= count;
   return albedo;
 }
 

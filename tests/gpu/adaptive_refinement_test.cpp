@@ -193,14 +193,15 @@ TEST(AdaptiveRefinement, PlansByEstimateWithinTheBudget) {
 }
 
 // With an error budget E the pixels whose first-pass estimate exceeds E are filtered:ss:2's pixels and all
-// others filtered's: the first pass is `filtered --aov error` (the same program), the second renders the
+// others filtered's: the first pass is `filtered` with the estimate the plan ranks by (eq. 1, no tiling term:
+// filtered:adaptive with a budget no pixel exceeds writes it), the second renders the
 // listed pixels' strata as filtered:ss:2 renders them (from K = 4 on a refined stratum lays one row of
 // taps where filtered:ss:K splits it: docs/error_estimate.md, "Refined strata"). A time budget cuts the
 // same ranking.
 TEST(AdaptiveRefinement, RefinedPixelsAreFilteredPerStratumAndTheRestFiltered) {
   auto context = test::make_validated_context();
   const Scene scene = objects_scene();
-  const Image first = render(*context, scene, method("filtered", {}, true));
+  const Image first = render(*context, scene, method("filtered:adaptive:2", error_budget(1e9), true));
   const Image strata = render(*context, scene, method("filtered:ss:2"));
   const std::vector<float> estimate = error_channel(first);
   std::vector<float> sorted = estimate;
