@@ -478,12 +478,14 @@ const float kFilteredSplit = float(FACET_RENDER_FILTERED_SPLIT);
 // `spread` is 0 and `finer` the albedo itself.
 vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 spread, out vec3 finer) {
   spread = vec3(0.0);
-  finer = vec3(0.0);
   // A pipeline without kEstimatesError has no estimate code; one with it may leave the estimate out per
   // dispatch (GpuTile::list.y: the spread's loops then run one masked trip per tap).
   bool estimates = kEstimatesError && kTextureMethod == 3u && tile.list.y == 0u;
   GpuColormap map = colormap_record(m.texture.w);
-  if (kTextureMethod == 0u) return colormap_at(map, sample_level(m.texture.x, uv, true).x);
+  if (kTextureMethod == 0u) {
+    finer = colormap_at(map, sample_level(m.texture.x, uv, true).x);
+    return finer;
+  }
   uvec4 level0 = texture_level_at(m.texture.x).info;
   vec2 size = vec2(level0.yz);
   AnisotropicFootprint f = anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kMaxAnisotropicTaps);
