@@ -178,6 +178,7 @@ vec3 shade(vec3 o, vec3 d, Hit hit, vec2 film, float pixel_step) {
   FacingNormal facing = facing_normal(hit, d);
   vec3 n = facing.n;
   bool back_face = facing.back_face;
+  if (kWritesAovs) aov_depth_normal = vec4(hit.t * dot(d, globals.camera_forward.xyz), n);
   vec3 l = globals.light_direction.xyz;
   GpuMaterial m = material_at(hit.material);
   bool field_hit = false;
@@ -297,7 +298,6 @@ vec4 radiance(vec2 film, float pixel_step) {
   vec3 d = camera_ray(film);
   Hit hit = trace(o, d, 0.0, kInfinity, kTracesHeightFields);
   if (kWritesAovs && hit.material != kNoHit) {
-    aov_depth_normal = vec4(hit.t * dot(d, globals.camera_forward.xyz), facing_normal(hit, d).n);
     // uv of macro-surfaces; a microsurface's hits keep 0 (its field has texel coordinates of its own).
     if (material_at(hit.material).kind.x != FACET_MATERIAL_MICROSURFACE)
       aov_uv_error.xy = surface_uv(hit, o + hit.t * d).uv;
