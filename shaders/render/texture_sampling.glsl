@@ -465,6 +465,12 @@ ivec2 next_row_major(ivec2 cell, int row_length) {
 // (docs/colormap_filtering.md, "Mixture of tap laws"); 3 lowers the error further at about twice the
 // device time, 2 was kept for cost.
 const float kFilteredSplit = float(FACET_RENDER_FILTERED_SPLIT);
+// How many times further than the first tiling's tap cap the error estimate's second tiling follows a
+// footprint's elongation (docs/error_estimate.md, eq. 10).
+const float kFinerTilingTapCap = 4.0;
+
+// The height of the parallelogram with edges a and b across a (in a's and b's units).
+float parallelogram_height(vec2 a, vec2 b) { return abs(a.x * b.y - a.y * b.x) / max(length(a), 1e-30); }
 
 // The albedo of a colour-mapped texture at the hit, by the method of kTextureMethod, averaged over
 // the taps of the anisotropic footprint with uv axes duv_dx, duv_dy (unused by naive). `mip` and
@@ -508,19 +514,26 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
   uint tilings = estimates && tile.list.z == 1u ? 2u : 1u;
   for (uint tiling = 0u; tiling < tilings; ++tiling) {
     float split = tiling == 0u ? first_split : 2.0 * first_split;
-    float along = f.taps * split;
+    // The second tiling follows the footprint's elongation kFinerTilingTapCap times further than the first's
+    // cap, whose taps blur across a footprint longer than the cap (eq. 10); it splits the footprint across
+    // only into rows as wide as its taps, and never into fewer rows than the first tiling.
+    AnisotropicFootprint ft = tiling == 0u ? f : anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kFinerTilingTapCap * kMaxAnisotropicTaps);
+    float along = ft.taps * split;
+    float rows = tiling == 0u ? split
+                              : clamp(ceil(split * parallelogram_height(major * size, minor * size) / max(ft.width, 1e-30)),
+                                      first_split, split);
     // Each tap is a split-th of the whole footprint's per axis: one level finer per halving, except where
     // the whole footprint was clamped to the coarsest level (its own width is unknown there).
-    float lod = f.lod >= coarsest ? f.lod : max(f.lod - log2(split), 0.0);
-    vec2 tap_major = major * size / along, tap_minor = minor * size / split;  // one tap's axes, in texels
+    float lod = ft.lod >= coarsest ? ft.lod : max(ft.lod - log2(split), 0.0);
+    vec2 tap_major = major * size / along, tap_minor = minor * size / rows;  // one tap's axes, in texels
     vec3 colour = vec3(0.0);
     MomentLevels levels = moment_levels(m.texture.x, m.texture.y, lod);
     // One loop over the taps (k along, j across within it; next_row_major), not a loop in a loop, which cost
     // the noise plane's `filtered` a quarter of its device time. The sums run in the nested loops' order.
-    float count = along * split;
+    float count = along * rows;
     ivec2 kj = ivec2(0);
     for (float i = 0.0; i < count; i += 1.0) {
-      vec2 tap = uv + major * ((float(kj.x) + 0.5) / along - 0.5) + minor * ((float(kj.y) + 0.5) / split - 0.5);
+      vec2 tap = uv + major * ((float(kj.x) + 0.5) / along - 0.5) + minor * ((float(kj.y) + 0.5) / rows - 0.5);
       if (kTextureMethod == 2u) {
         colour += sample_trilinear(m.texture.z, m.texture.y, tap, lod, false).rgb;
       } else if (kTextureMethod == 1u) {
@@ -534,7 +547,7 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
         if (estimates && tiling == 0u) spread += colormap_spread(walked, t.x, sigma, mean);
 #endif
       }
-      kj = next_row_major(kj, int(split));
+      kj = next_row_major(kj, int(rows));
     }
     if (tiling == 0u) {
       albedo = colour / count;
