@@ -169,7 +169,7 @@ bool mip_texels_are_whole(const Scene& scene) {
 // The specialization constants of the pass by their names in the shaders: what the scene uses (`code`, the
 // plan's), how the method shades it. One entry per named id (the count is checked; render_layout.hpp checks the ids).
 std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMethod& method,
-                                             const DiffractionPlan& diffraction, uint32_t code) {
+                                             const DiffractionPlan& diffraction, uint32_t code, bool statistics_pass) {
   const auto has = [code](uint32_t part) { return (code & part) != 0 ? 1u : 0u; };
   const auto constants = std::to_array<vk::SpecConstant>({
       {FACET_RENDER_SPEC_HAS_MICROFLAKE, has(FACET_CODE_MICROFLAKE)},
@@ -202,6 +202,7 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
       {FACET_RENDER_SPEC_COLORMAP_DIVIDES, colormaps_divide(scene)},
       {FACET_RENDER_SPEC_PLANE_TRIPS, primitive_trips(scene, method, scene.planes.size())},
       {FACET_RENDER_SPEC_SPHERE_TRIPS, primitive_trips(scene, method, scene.spheres.size())},
+      {FACET_RENDER_SPEC_STATISTICS_PASS, statistics_pass ? 1u : 0u},
   });
   static_assert(std::tuple_size_v<decltype(constants)> == FACET_RENDER_SPEC_COUNT);
   return {constants.begin(), constants.end()};
@@ -212,8 +213,36 @@ std::vector<vk::SpecConstant> specialization(const Scene& scene, const RenderMet
 std::vector<vk::BufferKind> binding_kinds() {
   std::vector<vk::BufferKind> kinds = SceneBuffers::binding_kinds();
   kinds.resize(FACET_RENDER_BINDING_COUNT, vk::BufferKind::Texels);
+  kinds[FACET_RENDER_BINDING_STATISTICS_QUEUE] = vk::BufferKind::Storage;
   return kinds;
 }
+
+// The pass's pipeline for `spec`, compiled on a thread of its own (lavapipe's pipeline creation is CPU work of its
+// own) while the diffraction tables are read and the textures upload. The thread ends before the pass's
+// constructor does (the kernels wait for it; so does the future if the reading or the upload throws).
+std::future<std::unique_ptr<vk::Kernel>> compile(vk::Context& context, const Scene& scene, const RenderMethod& method,
+                                                 std::vector<vk::SpecConstant> spec, uint32_t code) {
+  return std::async(std::launch::async, [&context, &scene, &method, spec = std::move(spec), code] {
+    const std::vector<uint32_t> program = direct_pass_program(scene, method, code);
+    return std::make_unique<vk::Kernel>(context, vk::KernelDesc{.name = "render_direct",
+                                                                .spirv = program,
+                                                                .buffer_count = FACET_RENDER_BINDING_COUNT,
+                                                                .push_constant_bytes = sizeof(GpuTile),
+                                                                .specialization = spec,
+                                                                .buffer_kinds = binding_kinds()});
+  });
+}
+
+// Whether filtered's microsurface statistics are shaded in a dispatch of their own
+// (render/microsurface_statistics_queue.glsl): wherever the pass traces height fields for filtered.
+bool queues_statistics(const Scene& scene, const RenderMethod& method, uint32_t code) {
+  return traces_height_fields(scene, method) && (code & FACET_CODE_FILTERED) != 0 &&
+         (code & FACET_CODE_MICROSURFACE) != 0;
+}
+
+// The statistics queue's bytes for `entries` (render/microsurface_statistics_queue.glsl): a uvec4 count, then a
+// uvec4 an entry.
+uint64_t statistics_queue_bytes(int entries) { return sizeof(glm::uvec4) * (1 + static_cast<uint64_t>(entries)); }
 
 // A pixel's planes in the pixel buffer (render/direct_pass.glsl): the colour and coverage, then, with
 // auxiliary outputs, the sums over the strata of (depth, normal), (uv, error, texture term) and (lit, -).
@@ -299,20 +328,13 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       writes_aovs_(writes_aovs(method)),
       counts_work_(method.counts_work),
       // The specialization needs the diffraction's plan (method, the tables' layout), not their words nor
-      // anything of the textures. The thread ends before the constructor does (kernel_ waits for it; so
-      // does the future if the reading or the upload throws).
-      compiling_(std::async(std::launch::async,
-                            [&context, &scene, &method,
-                             spec = specialization(scene, method, plan.diffraction, plan.code), code = plan.code] {
-                              const std::vector<uint32_t> program = direct_pass_program(scene, method, code);
-                              return std::make_unique<vk::Kernel>(
-                                  context, vk::KernelDesc{.name = "render_direct",
-                                                          .spirv = program,
-                                                          .buffer_count = FACET_RENDER_BINDING_COUNT,
-                                                          .push_constant_bytes = sizeof(GpuTile),
-                                                          .specialization = spec,
-                                                          .buffer_kinds = binding_kinds()});
-                            })),
+      // anything of the textures.
+      compiling_(compile(context, scene, method, specialization(scene, method, plan.diffraction, plan.code, false),
+                         plan.code)),
+      compiling_statistics_(queues_statistics(scene, method, plan.code)
+                                ? compile(context, scene, method,
+                                          specialization(scene, method, plan.diffraction, plan.code, true), plan.code)
+                                : std::future<std::unique_ptr<vk::Kernel>>()),
       // The tables' words (the table cache's file, or their build), read while the pipeline compiles.
       diffraction_(
           timed(timings, "diffraction", [&] { return upload_diffraction(context, std::move(plan.diffraction)); })),
@@ -327,14 +349,42 @@ DirectPass::DirectPass(vk::Context& context, const Scene& scene, const RenderMet
       pixels_(context, sizeof(vec4) * pixel_vec4s(writes_aovs_) *
                            static_cast<uint64_t>(std::max(tile_size_ * tile_size_, list_capacity_))),
       pixel_list_(vk::Buffer::of<glm::uvec2>(context, static_cast<size_t>(list_capacity_))),
-      // The part of the pipeline's creation the upload did not hide.
-      kernel_(timed(timings, "pipeline", [&] { return compiling_.get(); })) {
+      statistics_queue_(context, statistics_queue_bytes(compiling_statistics_.valid()
+                                                            ? std::max(tile_size_ * tile_size_, list_capacity_)
+                                                            : 1)),
+      // The part of the pipelines' creation the upload did not hide.
+      kernel_(timed(timings, "pipeline", [&] {
+        if (compiling_statistics_.valid()) statistics_kernel_ = compiling_statistics_.get();
+        return compiling_.get();
+      })) {
+  // The statistics' dispatch may read entries its lanes do not shade (lavapipe runs masked lanes): zeros.
+  const std::vector<char> zeros(statistics_queue_.size(), 0);
+  statistics_queue_.upload(zeros.data(), zeros.size());
   // lavapipe JIT-compiles a pipeline on its first dispatch: one pixel here keeps that out of every
   // frame's device time (and gives it a phase of its own).
   timed(timings, "jit", [&] {
     buffers_.set_camera(scene, scene.camera, 1, 1);
     dispatch_tile(bindings(), 0, 0, 1, 1, 0);
+    if (statistics_kernel_) {  // an empty queue: one workgroup of masked lanes
+      const GpuTile empty{uvec4(0, 0, 1, 1), uvec4(0, 0, 0, 1), uvec4(1, 1, 0, 0), uvec4(0, 1, 0, 0)};
+      statistics_kernel_->dispatch(bindings(), &empty, glm::uvec3(1, 1, 1));
+    }
   });
+}
+
+double DirectPass::dispatch(std::span<const vk::Buffer* const> bindings, GpuTile tile, glm::uvec3 groups) {
+  if (!statistics_kernel_) return kernel_->dispatch(bindings, &tile, groups);
+  const uint32_t none = 0;
+  statistics_queue_.upload(&none, sizeof none);
+  double ms = kernel_->dispatch(bindings, &tile, groups);
+  uint32_t queued = 0;
+  statistics_queue_.download(&queued, sizeof queued);
+  if (queued == 0) return ms;
+  constexpr uint32_t kGroup = FACET_RENDER_WORKGROUP * FACET_RENDER_WORKGROUP;
+  const uint32_t blocks = (queued + kGroup - 1) / kGroup;
+  tile.spread = uvec4(blocks, workgroup_spread_stride(blocks), 0, 0);
+  tile.list.w = queued;
+  return ms + statistics_kernel_->dispatch(bindings, &tile, glm::uvec3(blocks, 1, 1));
 }
 
 double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h,
@@ -346,7 +396,7 @@ double DirectPass::dispatch_tile(std::span<const vk::Buffer* const> bindings, in
   const int k = samples_per_axis_;
   const GpuTile tile{uvec4(x0, y0, w, h), uvec4(stratum % k, stratum / k, stratum, k), spread,
                      uvec4(0, skips_estimate(false), compares_tilings(aovs_.error, adaptive_samples_per_axis_ > 0), 0)};
-  return kernel_->dispatch(bindings, &tile, groups);
+  return dispatch(bindings, tile, groups);
 }
 
 double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, std::size_t count, int k) {
@@ -355,7 +405,7 @@ double DirectPass::dispatch_list(std::span<const vk::Buffer* const> bindings, st
   const uvec4 spread(blocks, workgroup_spread_stride(blocks), 0, 0);
   const auto n = static_cast<uint32_t>(count);
   const GpuTile tile{uvec4(0, 0, n, 1), uvec4(0, 0, 0, k), spread, uvec4(n, skips_estimate(true), 0, 0)};
-  return kernel_->dispatch(bindings, &tile, glm::uvec3(blocks, 1, 1));
+  return dispatch(bindings, tile, glm::uvec3(blocks, 1, 1));
 }
 
 uint32_t DirectPass::skips_estimate(bool refining) const {
@@ -458,6 +508,7 @@ std::vector<const vk::Buffer*> DirectPass::bindings() const {
   slots[FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_SCALES] = &diffraction_.preintegrated_scales;
   slots[FACET_RENDER_BINDING_DIFFRACTION_OBSERVER] = &diffraction_.observer;
   slots[FACET_RENDER_BINDING_PIXEL_LIST] = &pixel_list_;
+  slots[FACET_RENDER_BINDING_STATISTICS_QUEUE] = &statistics_queue_;
   return slots;
 }
 

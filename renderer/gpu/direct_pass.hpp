@@ -75,6 +75,9 @@ class DirectPass {
   DirectPass(vk::Context& context, const Scene& scene, const RenderMethod& method, int tile_size, PhaseTimings* timings,
              Plan plan);
   std::vector<const vk::Buffer*> bindings() const;  // scene buffers, pixels, diffraction buffers
+  // Dispatches `tile` in `groups` workgroups and, where the pass queues filtered's microsurface statistics, a
+  // second dispatch that shades the queue (render/microsurface_statistics_queue.glsl); their device ms.
+  double dispatch(std::span<const vk::Buffer* const> bindings, GpuTile tile, glm::uvec3 groups);
   // Renders stratum `stratum` of ss:K into pixels_ for the tile's w x h pixels at (x0, y0); its device ms.
   double dispatch_tile(std::span<const vk::Buffer* const> bindings, int x0, int y0, int w, int h, int stratum);
   // Renders the first `count` entries of pixel_list_ (each a pixel and one of its K x K strata) into
@@ -109,11 +112,14 @@ class DirectPass {
   // upload (lavapipe's pipeline creation is CPU work of its own; the table read is one file, the upload
   // mostly waits on small dispatches).
   std::future<std::unique_ptr<vk::Kernel>> compiling_;
+  std::future<std::unique_ptr<vk::Kernel>> compiling_statistics_;  // the queue's pipeline, where one is queued
   DiffractionBuffers diffraction_;
   SceneBuffers buffers_;
   int list_capacity_;  // filtered:adaptive: the strata a dispatch of the refinement renders at most
   vk::Buffer pixels_;  // one tile's pixels: frames of any size stay within the storage-buffer range
   vk::Buffer pixel_list_;  // filtered:adaptive: up to list_capacity_ strata (pixel positions) to render
+  vk::Buffer statistics_queue_;                    // filtered on traced microsurfaces: a dispatch's queued statistics
+  std::unique_ptr<vk::Kernel> statistics_kernel_;  // the queue's dispatch (null: none queued), set with kernel_
   std::unique_ptr<vk::Kernel> kernel_;
 };
 

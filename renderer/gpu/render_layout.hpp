@@ -21,7 +21,8 @@ static_assert(contiguous_ids(
         FACET_RENDER_BINDING_DIFFRACTION_WAVELENGTHS, FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS,
         FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_SCALES, FACET_RENDER_BINDING_DIFFRACTION_OBSERVER,
         FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_1, FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_2,
-        FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_3, FACET_RENDER_BINDING_PIXEL_LIST},
+        FACET_RENDER_BINDING_DIFFRACTION_PREINTEGRATED_WORDS_3, FACET_RENDER_BINDING_PIXEL_LIST,
+        FACET_RENDER_BINDING_STATISTICS_QUEUE},
     FACET_RENDER_SCENE_BINDING_COUNT));
 static_assert(contiguous_ids(std::array<int, FACET_RENDER_SPEC_COUNT>{FACET_RENDER_SPEC_HAS_MICROFLAKE,
                                                                       FACET_RENDER_SPEC_HAS_TEXTURE,
@@ -47,6 +48,7 @@ static_assert(contiguous_ids(std::array<int, FACET_RENDER_SPEC_COUNT>{FACET_REND
                                                                       FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS,
                                                                       FACET_RENDER_SPEC_COLORMAP_DIVIDES,
                                                                       FACET_RENDER_SPEC_PLANE_TRIPS,
-                                                                      FACET_RENDER_SPEC_SPHERE_TRIPS}));
+                                                                      FACET_RENDER_SPEC_SPHERE_TRIPS,
+                                                                      FACET_RENDER_SPEC_STATISTICS_PASS}));
 
 }  // namespace facet::gpu

@@ -36,7 +36,10 @@
 // frame position and the stratum's index as (x | stratum << 16, y) (render/direct_pass.glsl;
 // renderer/gpu/direct_pass.cpp).
 #define FACET_RENDER_BINDING_PIXEL_LIST 20
-#define FACET_RENDER_BINDING_COUNT 21
+// filtered on traced microsurfaces: the queue of samples whose statistics a dispatch of their own shades
+// (render/microsurface_statistics_queue.glsl): a uvec4 count, then a uvec4 an entry.
+#define FACET_RENDER_BINDING_STATISTICS_QUEUE 21
+#define FACET_RENDER_BINDING_COUNT 22
 #define FACET_RENDER_PREINTEGRATED_SLICES 4  // the word bindings above
 
 // Specialization constants (what each selects: render/direct_pass.glsl).
@@ -65,7 +68,8 @@
 #define FACET_RENDER_SPEC_PLANE_TRIPS 22
 #define FACET_RENDER_SPEC_SPHERE_TRIPS 23
 #define FACET_RENDER_SPEC_COLORMAP_DIVIDES 24
-#define FACET_RENDER_SPEC_COUNT 25
+#define FACET_RENDER_SPEC_STATISTICS_PASS 25
+#define FACET_RENDER_SPEC_COUNT 26
 // The value of FACET_RENDER_SPEC_PLANE_TRIPS and _SPHERE_TRIPS for a loop over the scene's count (render/trace.glsl).
 #define FACET_RENDER_LOOPED_TRIPS 0xffffffffu
 // Colour maps of up to this many points are walked whole (not searched); where every map of a kind in a

@@ -68,6 +68,9 @@ layout(constant_id = FACET_RENDER_SPEC_COLORMAP_SEARCH_STEPS) const uint kColorm
 layout(constant_id = FACET_RENDER_SPEC_COLORMAP_DIVIDES) const bool kColormapDivides = true;           // the same
 layout(constant_id = FACET_RENDER_SPEC_PLANE_TRIPS) const uint kPlaneTrips = FACET_RENDER_LOOPED_TRIPS;    // render/trace.glsl
 layout(constant_id = FACET_RENDER_SPEC_SPHERE_TRIPS) const uint kSphereTrips = FACET_RENDER_LOOPED_TRIPS;  // the same
+// The dispatch that shades the queue of filtered's microsurface statistics (render/microsurface_statistics_queue.glsl)
+// instead of tracing the tile.
+layout(constant_id = FACET_RENDER_SPEC_STATISTICS_PASS) const bool kStatisticsPass = false;
 // naive, ss:K and filtered see a microsurface's geometry as the reference does: its height field,
 // traced (render/heightfield_trace.glsl); mip and colormip shade the flat rectangle.
 #ifdef FACET_HEIGHT_FIELDS
@@ -322,27 +325,64 @@ uvec2 tile_position() {
   return uvec2(block % gl_NumWorkGroups.x, block / gl_NumWorkGroups.x) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy;
 }
 
-void main() {
-  uvec2 pixel;
-  uint i;  // the pixel's slot in the pixel buffer
+// The sample in slot i of the pixel buffer: its pixel (xy) and stratum (zw). A tile's slot is its pixel's
+// position in the tile; a listed slot is one stratum of a pixel, (x | stratum << 16, y) in the pixel list.
+uvec4 slot_sample(uint i) {
   uint k = tile.stratum.w;
-  uvec2 stratum = tile.stratum.xy;
+  if (tile.list.x != 0u) {
+    uvec2 entry = texelFetch(pixel_list, int(i)).xy;
+    return uvec4(entry.x & 0xffffu, entry.y, (entry.x >> 16u) % k, (entry.x >> 16u) / k);
+  }
+  return uvec4(uvec2(i % tile.rect.z, i / tile.rect.z) + tile.rect.xy, tile.stratum.xy);
+}
+
+// The film position of a sample (slot_sample) of K x K strata.
+vec2 sample_film(uvec4 sample_at, float step) { return vec2(sample_at.xy) + (vec2(sample_at.zw) + 0.5) * step; }
+
+#if defined(FACET_HEIGHT_FIELDS) && FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+// kStatisticsPass: entry e of the queue (GpuTile::list.w entries, from the tracing dispatch of the same tile and
+// stratum) adds the statistics' part of its sample to the sample's slot, from the same camera ray and hit as
+// the tracing pass's, scaled as main() scales a tile's last stratum (which left a queued sample's scaling here).
+void shade_queued_statistics() {
+  uint e = spread_block() * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
+  if (e >= tile.list.w) return;
+  QueuedStatistics q = queued_statistics(e);
+  uint k = tile.stratum.w;
+  float step = 1.0 / float(k);
+  vec2 film = sample_film(slot_sample(q.slot), step);
+  vec3 o = globals.camera_origin.xyz, d = camera_ray(film);
+  GpuPlane plane = plane_at(q.plane);
+  Hit hit = Hit(q.t, plane.normal.xyz, plane.material.x, kHeightField, q.plane, vec2(0.0));
+  GpuMaterial m = material_at(hit.material);
+  MicrosurfaceFieldSample s = microsurface_field_sample(m, hit, o, d, o + q.t * d, camera_ray(film + vec2(step, 0.0)),
+                                                        camera_ray(film + vec2(0.0, step)));
+  vec4 value = vec4(microsurface_field_statistics(m, hit, s, d, globals.light_direction.xyz, q.visibility), 0.0);
+  if (kCountsWork) value = vec4(float(facet_work_fma), float(facet_work_reads), 0.0, 0.0);
+  vec4 sum = pixels[q.slot] + value;
+  pixels[q.slot] = tile.list.x == 0u && tile.stratum.z == k * k - 1u && !kCountsWork ? sum / float(k * k) : sum;
+}
+#endif
+
+void main() {
+#if defined(FACET_HEIGHT_FIELDS) && FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+  if (kStatisticsPass) {
+    shade_queued_statistics();
+    return;
+  }
+#endif
+  uint i;  // the sample's slot in the pixel buffer
+  uint k = tile.stratum.w;
   bool listed = tile.list.x != 0u;
   if (listed) {
     i = spread_block() * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
     if (i >= tile.list.x) return;
-    // An entry is one stratum of a pixel: (x | stratum << 16, y), the stratum sy k + sx.
-    uvec2 entry = texelFetch(pixel_list, int(i)).xy;
-    pixel = uvec2(entry.x & 0xffffu, entry.y);
-    stratum = uvec2((entry.x >> 16u) % k, (entry.x >> 16u) / k);
   } else {
     uvec2 at = tile_position();
     if (at.x >= tile.rect.z || at.y >= tile.rect.w) return;
-    pixel = at + tile.rect.xy;
     i = at.y * tile.rect.z + at.x;
   }
   float step = 1.0 / float(k);
-  vec4 sample_value = radiance(vec2(pixel) + (vec2(stratum) + 0.5) * step, step);
+  vec4 sample_value = radiance(sample_film(slot_sample(i), step), step);
   if (kCountsWork) sample_value = vec4(float(facet_work_fma), float(facet_work_reads), 0.0, 1.0);
   // A tile's strata add up here, one dispatch each, in the order of a loop over sy, then sx, and the sum
   // is scaled once at the end: the same float operations as averaging them within one invocation. A listed
@@ -350,7 +390,15 @@ void main() {
   bool adds = !listed && tile.stratum.z != 0u;
   vec4 sum = adds ? pixels[i] + sample_value : sample_value;
   // Work adds up over the strata: a pixel's work is their sum (renderer/gpu/work_per_pixel.cpp).
-  pixels[i] = !listed && tile.stratum.z == k * k - 1u && !kCountsWork ? sum / float(k * k) : sum;
+  bool queued = false;  // the statistics' dispatch adds the rest of the sample, and scales it
+#if defined(FACET_HEIGHT_FIELDS) && FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+  queued = statistics_pending;
+  if (queued) {
+    pending_statistics.slot = i;
+    queue_statistics(pending_statistics);
+  }
+#endif
+  pixels[i] = !listed && tile.stratum.z == k * k - 1u && !kCountsWork && !queued ? sum / float(k * k) : sum;
   if (kWritesAovs) {  // sums over the strata, divided on the host by the hits (the error by k^2)
     uint n = tile.rect.z * tile.rect.w;  // a list's length for a list (rect = (0, 0, n, 1))
     pixels[n + i] = adds ? pixels[n + i] + aov_depth_normal : aov_depth_normal;

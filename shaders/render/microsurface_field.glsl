@@ -4,6 +4,7 @@
 #ifndef FACET_RENDER_MICROSURFACE_FIELD_GLSL
 #define FACET_RENDER_MICROSURFACE_FIELD_GLSL
 #include "render/microsurface_shading.glsl"
+#include "render/microsurface_statistics_queue.glsl"
 #include "render/trace.glsl"
 #include "render/variant_code.glsl"
 
@@ -37,7 +38,8 @@ Hit microsurface_flat_hit(Hit hit, vec3 d) {
 // shadows itself) and the other objects: visibility.x, which the caller traces when s.w > 0.
 // filtered: the same where the footprint is within a texel; from two texels on the footprint's
 // statistics around the traced hit, lit by visibility.y, the ray through the field beyond the footprint; a blend
-// between (T1). n: the hit's micro-normal facing the viewer.
+// between (T1), whose statistics' part is left to the queue (pending_statistics). n: the hit's micro-normal
+// facing the viewer.
 vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample s, vec3 d, vec3 n, vec3 l,
                                  vec2 visibility) {
   GpuPlane plane = plane_at(hit.index);
@@ -46,9 +48,21 @@ vec3 microsurface_field_radiance(GpuMaterial m, Hit hit, MicrosurfaceFieldSample
     c += s.w * microsurface_traced_radiance(m, plane, hit.barycentric, n, -d, l, visibility.x, -normalize(s.fp.d_dx),
                                             -normalize(s.fp.d_dy), s.fp.duv_dx * s.fp.size, s.fp.duv_dy * s.fp.size);
 #if FACET_VARIANT_HAS(FACET_CODE_FILTERED)  // naive: s.w = 1
-  if (s.w < 1.0) c += (1.0 - s.w) * microsurface_radiance(m, plane, s.fp, d, l, visibility.y, true);
+  // The statistics' part, microsurface_field_statistics, is added by the statistics' dispatch
+  // (render/microsurface_statistics_queue.glsl).
+  if (s.w < 1.0) {
+    statistics_pending = true;
+    pending_statistics = QueuedStatistics(0u, hit.t, hit.index, visibility.y);
+  }
 #endif
   return c;
 }
+
+#if FACET_VARIANT_HAS(FACET_CODE_FILTERED)
+// The statistics' part of a field hit's radiance, which microsurface_field_radiance leaves to the queue.
+vec3 microsurface_field_statistics(GpuMaterial m, Hit hit, MicrosurfaceFieldSample s, vec3 d, vec3 l, float visibility) {
+  return (1.0 - s.w) * microsurface_radiance(m, plane_at(hit.index), s.fp, d, l, visibility, true);
+}
+#endif
 
 #endif

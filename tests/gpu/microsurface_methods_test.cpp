@@ -198,6 +198,23 @@ TEST(MicrosurfaceMethods, StatisticsAreShadowedByTheTracedSurface) {
   EXPECT_EQ(context->validation_message_count(), 0u);
 }
 
+// filtered's statistics are shaded by a dispatch of their own after each tracing dispatch (a tile, or one of its
+// strata), from a queue of the samples that need them (render/microsurface_statistics_queue.glsl). Whatever the
+// tiles (one for the frame, or tiles of 8 or of 5 pixels, not a workgroup's multiple, cut at the frame's edges),
+// each queue starts empty and every queued sample adds to its own pixel once: the frames are equal bit for bit.
+TEST(MicrosurfaceMethods, FilteredStatisticsAreTheSameInTilesOfAnySize) {
+  auto context = test::make_validated_context();
+  const Scene s = scene("microsurface_terrain");
+  for (const char* name : {"filtered", "filtered:ss:2"}) {
+    const gpu::RenderMethod method = gpu::RenderMethod::parse(name);
+    const Image whole = gpu::render_direct(*context, s, kWidth, kHeight, method, nullptr, {}, 256);
+    for (int tile : {8, 5})
+      EXPECT_EQ(max_abs_error(gpu::render_direct(*context, s, kWidth, kHeight, method, nullptr, {}, tile), whole), 0.0)
+          << name << " in tiles of " << tile;
+  }
+  EXPECT_EQ(context->validation_message_count(), 0u);
+}
+
 // Close up and straight down, every footprint is smaller than a texel: filtered hands over to the
 // traced field (microsurface_trace_weight) and is naive, up to float rounding.
 TEST(MicrosurfaceMethods, FilteredEqualsNaiveUnderMagnification) {
