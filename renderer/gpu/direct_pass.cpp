@@ -241,8 +241,10 @@ bool queues_statistics(const Scene& scene, const RenderMethod& method, uint32_t 
 }
 
 // The statistics queue's bytes for `entries` (render/microsurface_statistics_queue.glsl): a uvec4 count, then a
-// uvec4 an entry.
-uint64_t statistics_queue_bytes(int entries) { return sizeof(glm::uvec4) * (1 + static_cast<uint64_t>(entries)); }
+// uvec4 an entry, and a workgroup's more, which the last workgroup's masked lanes read.
+uint64_t statistics_queue_bytes(int entries) {
+  return sizeof(glm::uvec4) * (1 + static_cast<uint64_t>(entries) + FACET_RENDER_WORKGROUP * FACET_RENDER_WORKGROUP);
+}
 
 // A pixel's planes in the pixel buffer (render/direct_pass.glsl): the colour and coverage, then, with
 // auxiliary outputs, the sums over the strata of (depth, normal), (uv, error, texture term) and (lit, -).
