@@ -10,7 +10,9 @@
 
 #include "common/error.hpp"
 #include "gpu/mip_builder.hpp"
+#include "kernels/shared.hpp"
 #include "layout/heightfield_layout.glsl"
+#include "precompute/visible_height_nodes.hpp"
 
 namespace facet::gpu {
 
@@ -69,6 +71,19 @@ uint append_height_bounds(TextureData& data, uint vertex_level) {
 // Each cell's four vertex heights (z00, z10, z01, z11) in one texel, the last vertex wrapping to the
 // first (the field repeats): the tracer loads a cell's corners in one fetch instead of four, and the
 // point lookups of (H1)-(H2) read them too.
+// The visible-height node table (precompute/visible_height_nodes.hpp) as one level: texel i MS_HEIGHT_NODES + k
+// holds node k at grid points i and i + 1 (the last point twice), so the shader's interpolation reads one texel.
+void append_visible_height_nodes(TextureData& data) {
+  static const std::vector<double> table = precompute::visible_height_node_table();
+  data.levels.push_back({uvec4(data.texels.size(), MS_NODE_TABLE_POINTS, MS_HEIGHT_NODES, 0)});
+  const auto z = [](int i, int k) {
+    return static_cast<float>(table[static_cast<std::size_t>(i) * MS_HEIGHT_NODES + k]);
+  };
+  for (int i = 0; i < MS_NODE_TABLE_POINTS; ++i)
+    for (int k = 0; k < MS_HEIGHT_NODES; ++k)
+      data.texels.push_back(vec4(z(i, k), z(std::min(i + 1, MS_NODE_TABLE_POINTS - 1), k), 0.0f, 0.0f));
+}
+
 void append_corner_quads(TextureData& data, uint vertex_level) {
   const uvec4 grid = data.levels[vertex_level].info;
   const uint w = grid.y, h = grid.z;
@@ -126,8 +141,10 @@ void fill_microsurface_level0(const MicrosurfaceMaterial& material, double z_off
 std::size_t microsurface_texels(const MicrosurfaceMaterial& material) {
   const int w = material.heights->width, h = material.heights->height;
   const std::size_t chain = mip_chain_texels(w, h), vertices = static_cast<std::size_t>(w) * h;
-  // The vertex level, three box-filtered chains, the min-max chain and the corner quads (add_microsurface).
-  return vertices + 3 * chain + std::size_t{heightfield_bound_span(w, h)} + vertices;
+  // The vertex level, three box-filtered chains, the min-max chain, the corner quads and the visible-height
+  // nodes (add_microsurface).
+  return vertices + 3 * chain + std::size_t{heightfield_bound_span(w, h)} + vertices +
+         std::size_t{MS_NODE_TABLE_POINTS} * MS_HEIGHT_NODES;
 }
 
 uint heightfield_bound_span(int width, int height) {
@@ -161,6 +178,7 @@ GpuMaterial add_microsurface(TextureData& data, const MicrosurfaceMaterial& mate
   const uint count = static_cast<uint>(mip_chain_sizes(field.width, field.height).size());
   const uint bounds = append_height_bounds(data, first);
   append_corner_quads(data, first);
+  append_visible_height_nodes(data);
 
   const auto add_map = [&](const std::optional<Colormap>& map) {
     if (!map) return FACET_NO_COLORMAP;

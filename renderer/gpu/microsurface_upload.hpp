@@ -11,7 +11,8 @@
 // (min, max, -, -), `count` levels of the same sizes, in heightfield_bound_span texels, level l at
 // FACET_HEIGHTFIELD_BOUND_LEVEL(span, l) after level 0 (unused texels between); then each cell's four
 // vertex heights in one texel (z00, z10, z01, z11): the tracer's cells, and the point lookups of
-// (H1)-(H2) (naive, filtered under magnification).
+// (H1)-(H2) (naive, filtered under magnification); then the visible-height nodes of filtered's statistics
+// (precompute/visible_height_nodes.hpp), texel i MS_HEIGHT_NODES + k holding node k at grid points i and i + 1.
 #pragma once
 
 #include <cstddef>

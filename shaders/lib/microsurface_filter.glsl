@@ -17,6 +17,11 @@
 #define MS_SLOPE_NODES 4
 #define MS_SLOPE_NODES_COSINE 3
 #define MS_HEIGHT_NODES 8
+// The visible-height nodes as a table (renderer/precompute/visible_height_nodes.hpp): at r = log(1 + lambda) on a
+// grid of MS_NODE_TABLE_STEP up to r = 70 (float's Lambda saturates at e^69, GM_LOG_LAMBDA_MAX), linear in r
+// between grid points (docs/microsurface_filtering.md, "Visible-height nodes from a table").
+#define MS_NODE_TABLE_STEP real(0.03125)
+#define MS_NODE_TABLE_POINTS 2241
 // Variance floors: a zero-variance footprint (a point) keeps every ratio of visible_slope finite; the
 // floors move slopes by 1e-6 and heights by 1e-9 world units, far below what a pixel resolves.
 #define MS_SLOPE_VARIANCE_MIN real(1e-12)
@@ -82,6 +87,14 @@ inline MicrosurfaceVisibility microsurface_visibility(MicrosurfaceStatistics s, 
 inline real microsurface_height_node(int k, real h_mean, real h_sigma, real lambda) {
   real u = (real(k) + real(0.5)) / real(MS_HEIGHT_NODES);
   return visible_height_sample(u, h_mean, h_sigma, lambda);
+}
+
+// Where lambda falls in the node table: (grid point i, the weight of point i + 1). A NaN lambda takes point 0.
+inline real2 microsurface_node_table_position(real lambda) {
+  real r = log(real(1) + lambda);
+  real p = r >= real(0) ? min(r / MS_NODE_TABLE_STEP, real(MS_NODE_TABLE_POINTS - 1)) : real(0);
+  real i = min(floor(p), real(MS_NODE_TABLE_POINTS - 2));
+  return real2(i, p - i);
 }
 
 // The lit part E_vis[g C^Lambda_l] = int_0^1 g(h(u)) u^a du, a = Lambda_l/(1 + Lambda_v), on the

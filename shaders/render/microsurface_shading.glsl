@@ -116,6 +116,16 @@ float microsurface_mean_facet_specular(MicrosurfaceStatistics stats, vec2 alpha,
   return microsurface_specular(centred, alpha, l_facet, v_facet, steps);
 }
 
+// Node k of the visible heights with CDF C^(1 + lambda) in standard units (microsurface_height_node with mean 0
+// and deviation 1), interpolated in microsurface m's node table (renderer/gpu/microsurface_upload.hpp): one
+// texel where the quantile would cost a logarithm, expm1, a square root and a Newton step a node.
+float microsurface_height_node_z(GpuMaterial m, int k, float lambda) {
+  uvec4 table = texture_level_at(heightfield_quads(m) + 1u).info;
+  vec2 at = microsurface_node_table_position(lambda);
+  vec4 z = texel_at(table.x + uint(at.x) * uint(MS_HEIGHT_NODES) + uint(k));
+  return mix(z.x, z.y, at.y);
+}
+
 // The filtered radiance of a footprint with Gaussian statistics `stats` (docs/microsurface_filtering.md
 // eq. M7): E/pi V H_lit S_cos + E_amb/pi H S + V E R f_spec; v_x, v_y: the views one pixel step away. `side`
 // is -1 where the field is seen from below: `stats` are then its mirror image's (microsurface_seen_statistics),
@@ -148,7 +158,7 @@ vec3 microsurface_filtered_radiance(GpuMaterial m, MicrosurfaceStatistics stats,
     for (int node_index = 0; node_index < MS_HEIGHT_NODES * lit_count; ++node_index) {
       int k = node_lit.x, lit_nodes = node_lit.y;
       float lambda = lit_nodes == 0 ? vis.lambda_v : vis.lambda_v + vis.lambda_l;
-      vec3 c = microsurface_height_colour(m, side * microsurface_height_node(k, stats.h_mean, stats.h_sigma, lambda));
+      vec3 c = microsurface_height_colour(m, side * (stats.h_mean + stats.h_sigma * microsurface_height_node_z(m, k, lambda)));
       if (lit_nodes == 1)
         heights_lit += c / float(MS_HEIGHT_NODES);
       else {
