@@ -68,9 +68,6 @@ uint append_height_bounds(TextureData& data, uint vertex_level) {
   return first;
 }
 
-// Each cell's four vertex heights (z00, z10, z01, z11) in one texel, the last vertex wrapping to the
-// first (the field repeats): the tracer loads a cell's corners in one fetch instead of four, and the
-// point lookups of (H1)-(H2) read them too.
 // The visible-height node table (precompute/visible_height_nodes.hpp) as one level: texel i MS_HEIGHT_NODES + k
 // holds node k at grid points i and i + 1 (the last point twice), so the shader's interpolation reads one texel.
 void append_visible_height_nodes(TextureData& data) {
@@ -84,6 +81,9 @@ void append_visible_height_nodes(TextureData& data) {
       data.texels.push_back(vec4(z(i, k), z(std::min(i + 1, MS_NODE_TABLE_POINTS - 1), k), 0.0f, 0.0f));
 }
 
+// Each cell's four vertex heights (z00, z10, z01, z11) in one texel, the last vertex wrapping to the
+// first (the field repeats): the tracer loads a cell's corners in one fetch instead of four, and the
+// point lookups of (H1)-(H2) read them too.
 void append_corner_quads(TextureData& data, uint vertex_level) {
   const uvec4 grid = data.levels[vertex_level].info;
   const uint w = grid.y, h = grid.z;

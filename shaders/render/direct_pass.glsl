@@ -339,6 +339,10 @@ uvec4 slot_sample(uint i) {
 // The film position of a sample (slot_sample) of K x K strata.
 vec2 sample_film(uvec4 sample_at, float step) { return vec2(sample_at.xy) + (vec2(sample_at.zw) + 0.5) * step; }
 
+// Whether a sample's stored sum is the pixel's last: a tile's last stratum scales the sum of its strata (a listed
+// entry keeps its own sample, which the host adds up; work is a sum).
+bool scales_pixel() { return tile.list.x == 0u && tile.stratum.z == tile.stratum.w * tile.stratum.w - 1u && !kCountsWork; }
+
 #if defined(FACET_HEIGHT_FIELDS) && FACET_VARIANT_HAS(FACET_CODE_FILTERED)
 // kStatisticsPass: entry e of the queue (GpuTile::list.w entries, from the tracing dispatch of the same tile and
 // stratum) adds the statistics' part of its sample to the sample's slot, from the same camera ray and hit as
@@ -359,7 +363,7 @@ void shade_queued_statistics() {
   vec4 value = vec4(microsurface_field_statistics(m, hit, s, d, globals.light_direction.xyz, q.visibility), 0.0);
   if (kCountsWork) value = vec4(float(facet_work_fma), float(facet_work_reads), 0.0, 0.0);
   vec4 sum = pixels[q.slot] + value;
-  pixels[q.slot] = tile.list.x == 0u && tile.stratum.z == k * k - 1u && !kCountsWork ? sum / float(k * k) : sum;
+  pixels[q.slot] = scales_pixel() ? sum / float(k * k) : sum;
 }
 #endif
 
@@ -398,7 +402,7 @@ void main() {
     queue_statistics(pending_statistics);
   }
 #endif
-  pixels[i] = !listed && tile.stratum.z == k * k - 1u && !kCountsWork && !queued ? sum / float(k * k) : sum;
+  pixels[i] = scales_pixel() && !queued ? sum / float(k * k) : sum;
   if (kWritesAovs) {  // sums over the strata, divided on the host by the hits (the error by k^2)
     uint n = tile.rect.z * tile.rect.w;  // a list's length for a list (rect = (0, 0, n, 1))
     pixels[n + i] = adds ? pixels[n + i] + aov_depth_normal : aov_depth_normal;

@@ -517,11 +517,13 @@ vec3 textured_albedo(GpuMaterial m, vec2 uv, vec2 duv_dx, vec2 duv_dy, out vec3 
     // The second tiling follows the footprint's elongation kFinerTilingTapCap times further than the first's
     // cap, whose taps blur across a footprint longer than the cap (eq. 10); it splits the footprint across
     // only into rows as wide as its taps, and never into fewer rows than the first tiling.
-    AnisotropicFootprint ft = tiling == 0u ? f : anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kFinerTilingTapCap * kMaxAnisotropicTaps);
+    // Without kEstimatesError the condition is constant and its code left out (lavapipe would run both sides).
+    bool second = kEstimatesError && tiling != 0u;
+    AnisotropicFootprint ft = second ? anisotropic_footprint(duv_dx, duv_dy, size, float(m.texture.y), kFinerTilingTapCap * kMaxAnisotropicTaps) : f;
     float along = ft.taps * split;
-    float rows = tiling == 0u ? split
-                              : clamp(ceil(split * parallelogram_height(major * size, minor * size) / max(ft.width, 1e-30)),
-                                      first_split, split);
+    float rows = second ? clamp(ceil(split * parallelogram_height(major * size, minor * size) / max(ft.width, 1e-30)),
+                                first_split, split)
+                        : split;
     // Each tap is a split-th of the whole footprint's per axis: one level finer per halving, except where
     // the whole footprint was clamped to the coarsest level (its own width is unknown there).
     float lod = ft.lod >= coarsest ? ft.lod : max(ft.lod - log2(split), 0.0);
